@@ -1,0 +1,74 @@
+#pragma once
+// The shared reduction of a query to the angle domain (section 3 of the maths note).
+//
+// With u0 the foot of the perpendicular from p and h its length, t - u0 = h tan(theta)
+// turns dt / |p - x(t)|^2 into dtheta / h. Samplers work with the offset
+// delta = theta - theta_a in [0, width] rather than theta itself: narrow intervals and
+// peaks near an endpoint keep all their digits, and tan never sees pi/2.
+#include <limits>
+
+#include "../core/math.hpp"
+#include "../core/query.hpp"
+
+namespace vrlis {
+
+template <typename Real>
+class AngleDomain {
+ public:
+  explicit AngleDomain(const SegmentQuery<Real>& q) : tmin_(q.tmin), tmax_(q.tmax) {
+    Vec3<Real> d = q.point - q.origin;
+    u0_ = Dot(d, q.dir);
+    Vec3<Real> perp = d - u0_ * q.dir;
+    h_ = Length(perp);
+    Real scale = Length(d) + std::abs(tmin_) + (std::isfinite(tmax_) ? std::abs(tmax_) : Real(0));
+    Real floor = NoiseFloor(scale);
+    // On (or within rounding of) the line the plane is arbitrary; any normal will do.
+    n_ = h_ > floor ? (Real(1) / h_) * perp : AnyPerpendicular(q.dir);
+    h_ = std::max(h_, floor);
+    tan_a_ = (tmin_ - u0_) / h_;
+    width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
+                                  : std::atan2(Real(1), tan_a_);
+  }
+
+  Real tmin() const { return tmin_; }
+  Real tmax() const { return tmax_; }
+  Real u0() const { return u0_; }
+  Real h() const { return h_; }
+  Vec3<Real> normal() const { return n_; }  // unit, from the foot of the perpendicular to p
+  Real tan_theta_a() const { return tan_a_; }
+  Real theta_a() const { return std::atan(tan_a_); }
+  Real theta_b() const { return theta_a() + width_; }
+  Real width() const { return width_; }  // theta_b - theta_a, computed without cancellation
+
+  // theta(t) - theta_a for t in [tmin, tmax].
+  Real offset_at(Real t) const {
+    if (!(t < tmax_)) return width_;
+    if (!(t > tmin_)) return 0;
+    return OffsetOfSlope((t - tmin_) / h_, (t - u0_) / h_);
+  }
+
+  // The inverse of offset_at: tan(theta_a + delta) written with the addition formula.
+  Real t_at(Real delta) const {
+    Real s = std::sin(delta), c = std::cos(delta);
+    Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
+    Real t = denom > 0 ? tmin_ + (h_ + (tmin_ - u0_) * tan_a_) * s / denom : tmax_;
+    return Clamp(t, tmin_, LargestSample());
+  }
+
+  // dtheta / dt = h / (h^2 + (t - u0)^2).
+  Real dtheta_dt(Real t) const {
+    Real x = (t - u0_) / h_;
+    return Real(1) / (h_ * (1 + x * x));
+  }
+
+ private:
+  // atan(b) - atan(a) with b - a = db >= 0, from the argument of (1 + i b)(1 - i a).
+  Real OffsetOfSlope(Real db, Real b) const { return std::atan2(db, 1 + tan_a_ * b); }
+  // Samples must be finite even on an unbounded segment.
+  Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
+
+  Real tmin_, tmax_, u0_, h_, tan_a_, width_;
+  Vec3<Real> n_;
+};
+
+}  // namespace vrlis

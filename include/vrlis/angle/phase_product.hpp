@@ -1,0 +1,95 @@
+#pragma once
+// The sampling target in the angle domain: the product of the segment lobe and the point
+// lobe as functions of delta = theta - theta_a (section 3 of the maths note).
+//
+// Both lobes are evaluated from half-angle sines of offsets that are computed without
+// cancellation, so lobes with |g| -> 1 keep their shape next to an endpoint.
+#include "../core/phase.hpp"
+#include "angle_domain.hpp"
+
+namespace vrlis {
+
+template <typename Real>
+class PhaseProduct {
+ public:
+  PhaseProduct(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
+      : g_(q.g), g_point_(q.lobe.g), kind_(q.lobe.kind), width_(dom.width()) {
+    // Offsets of theta = -pi/2 and +pi/2; pick the formula whose atan2 is small.
+    Real A = dom.tan_theta_a();
+    if (A >= 0) {
+      upper_ = std::atan2(Real(1), A);
+      lower_ = upper_ - kPi<Real>;
+    } else {
+      lower_ = -std::atan2(Real(1), -A);
+      upper_ = lower_ + kPi<Real>;
+    }
+    if (kind_ == LobeKind::None) return;
+    Vec3<Real> n = dom.normal();
+    Real a = -Dot(q.lobe.axis, n), b = Dot(q.lobe.axis, q.dir), c = Dot(q.lobe.axis, Cross(q.dir, n));
+    r_ = std::min(std::sqrt(a * a + b * b), Real(1));
+    one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
+    // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.
+    theta_e_ = std::atan2(b - A * a, a + A * b);
+  }
+
+  Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
+
+  // HenyeyGreenstein(g, -sin theta): 1 -+ cos are 2 sin^2 of half the distance to a pole.
+  Real segment_lobe(Real delta) const {
+    return HenyeyGreenstein(g_, 2 * SinSqrHalf(delta - lower_), 2 * SinSqrHalf(upper_ - delta));
+  }
+
+  Real point_lobe(Real delta) const {
+    Real phi = delta - theta_e_;
+    switch (kind_) {
+      case LobeKind::HenyeyGreenstein: {
+        Real s2 = SinSqrHalf(phi);  // 1 -+ r cos(phi), exact near both peaks
+        return HenyeyGreenstein(g_point_, one_minus_r_ + 2 * r_ * s2, one_minus_r_ + 2 * r_ * (1 - s2));
+      }
+      case LobeKind::ClampedCosine: return std::max(r_ * std::cos(phi), Real(0)) * kInvPi<Real>;
+      case LobeKind::None: break;
+    }
+    return 1;
+  }
+
+  Real width() const { return width_; }
+  Real segment_g() const { return g_; }
+  Real point_g() const { return kind_ == LobeKind::HenyeyGreenstein ? g_point_ : Real(0); }
+  LobeKind point_kind() const { return kind_; }
+  Real r() const { return r_; }  // length of the point-lobe axis projected into the plane
+  Real theta_e_offset() const { return theta_e_; }
+
+  // A lobe that is constant in theta only scales the product; fits ignore it.
+  bool segment_lobe_flat() const { return g_ == 0; }
+  bool point_lobe_flat() const {
+    return kind_ == LobeKind::None || r_ == 0 || (kind_ == LobeKind::HenyeyGreenstein && g_point_ == 0);
+  }
+
+  // Where each lobe peaks, as an offset. The segment lobe peaks at a pole, on or beyond an
+  // endpoint; of the point lobe's peaks modulo 2 pi, the one nearest the interval.
+  Real segment_peak() const { return g_ > 0 ? lower_ : upper_; }
+  Real point_peak() const {
+    Real base = theta_e_ + (point_g() < 0 ? kPi<Real> : Real(0));
+    Real best = base;
+    for (Real image : {base - 2 * kPi<Real>, base + 2 * kPi<Real>})
+      if (DistanceToInterval(image) < DistanceToInterval(best)) best = image;
+    return best;
+  }
+  Real segment_peak_value() const { return HenyeyGreensteinPeak(g_); }
+  Real point_peak_value() const {
+    if (kind_ == LobeKind::ClampedCosine) return r_ * kInvPi<Real>;
+    if (kind_ == LobeKind::None) return 1;
+    return HenyeyGreenstein(std::abs(g_point_), one_minus_r_, 1 + r_);
+  }
+
+ private:
+  Real DistanceToInterval(Real x) const { return x < 0 ? -x : std::max(x - width_, Real(0)); }
+
+  Real g_, g_point_;
+  LobeKind kind_;
+  Real width_;
+  Real lower_, upper_;
+  Real r_ = 0, one_minus_r_ = 1, theta_e_ = 0;
+};
+
+}  // namespace vrlis

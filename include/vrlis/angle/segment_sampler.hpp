@@ -1,0 +1,87 @@
+#pragma once
+// Every camera-segment sampler is a density over delta = theta - theta_a carried back to
+// the segment parameter t. This adapter does the carrying once, for all of them.
+//
+// Contract (tested in tests/):
+// - valid() is Validate(query) == QueryError::None. For an invalid query, sample() and
+//   invert() return NaN and pdf() returns 0: a checkable outcome, never undefined behaviour.
+// - For a valid query, sample(u) for u in [0, 1] is finite and inside [tmin, tmax] (an
+//   unbounded segment samples below the largest finite Real); pdf(t) is finite, zero outside
+//   [tmin, tmax] and positive inside wherever the target is.
+// - invert(t) is the CDF of the sampled distribution, so invert(sample(u)) == u up to
+//   rounding for every sampler whose sample() is the CDF's inverse (all but CauchyMixture,
+//   which selects a component first; its round trip holds in distribution).
+// - A zero-length segment (or one whose angle width underflows) has no density: sample()
+//   returns tmin, pdf() returns 0 and invert() returns 0. Its integral is zero; skip it.
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include "angle_domain.hpp"
+
+namespace vrlis {
+
+template <typename Distribution>
+class SegmentSampler {
+ public:
+  using Real = typename Distribution::Real;
+
+  template <typename... FitArgs>
+  explicit SegmentSampler(const SegmentQuery<Real>& q, FitArgs&&... fit_args)
+      : error_(Validate(q)),
+        domain_(error_ == QueryError::None ? q : Fallback()),
+        dist_(Usable() ? q : Fallback(), Usable() ? domain_ : AngleDomain<Real>(Fallback()),
+              std::forward<FitArgs>(fit_args)...) {}
+  // (Distributions copy what they need from the domain; they keep no reference to it.)
+
+  bool valid() const { return error_ == QueryError::None; }
+  QueryError error() const { return error_; }
+  const AngleDomain<Real>& domain() const { return domain_; }
+  const Distribution& distribution() const { return dist_; }
+
+  Real sample(Real u) const {
+    if (!Usable()) return valid() ? domain_.tmin() : kNaN;
+    return domain_.t_at(dist_.sample(u));
+  }
+
+  Real pdf(Real t) const {
+    if (!Usable() || !(t >= domain_.tmin() && t <= domain_.tmax())) return 0;
+    return dist_.pdf(domain_.offset_at(t)) * domain_.dtheta_dt(t);
+  }
+
+  Real invert(Real t) const {
+    if (!Usable()) return valid() ? Real(0) : kNaN;
+    return Clamp(dist_.cdf(domain_.offset_at(t)), Real(0), Real(1));
+  }
+
+ private:
+  static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+  bool Usable() const { return valid() && domain_.width() >= std::numeric_limits<Real>::min(); }
+  // Fitting on invalid input could reach undefined behaviour (NaN to int); fit this instead.
+  static SegmentQuery<Real> Fallback() {
+    SegmentQuery<Real> q;
+    q.dir = {0, 0, 1};
+    q.tmax = 1;
+    q.point = {1, 0, 0};
+    return q;
+  }
+
+  QueryError error_;
+  AngleDomain<Real> domain_;
+  Distribution dist_;
+};
+
+// The static interface every camera-segment sampler S offers, checked at compile time:
+// S(const SegmentQuery<S::Real>&), and Real sample(Real), pdf(Real), invert(Real) const.
+template <typename S, typename = void>
+struct IsSegmentSampler : std::false_type {};
+
+template <typename S>
+struct IsSegmentSampler<
+    S, std::enable_if_t<std::is_constructible_v<S, const SegmentQuery<typename S::Real>&> &&
+                        std::is_same_v<decltype(std::declval<const S&>().sample(typename S::Real{})), typename S::Real> &&
+                        std::is_same_v<decltype(std::declval<const S&>().pdf(typename S::Real{})), typename S::Real> &&
+                        std::is_same_v<decltype(std::declval<const S&>().invert(typename S::Real{})), typename S::Real>>>
+    : std::true_type {};
+
+}  // namespace vrlis

@@ -1,0 +1,50 @@
+#pragma once
+// The Henyey-Greenstein phase function: evaluate, sample, invert.
+//
+// Convention: cos is the cosine between the direction light travels before and after the
+// scattering event, so g > 0 scatters forward. Values are densities over the sphere
+// (they integrate to one over solid angle).
+#include "math.hpp"
+
+namespace vrlis {
+
+// Written in terms of 1 - cos and 1 + cos so that the denominator 1 + g^2 - 2 g cos does
+// not cancel near either peak when |g| -> 1 (section 5 of the maths note).
+template <typename Real>
+Real HenyeyGreenstein(Real g, Real one_minus_cos, Real one_plus_cos) {
+  Real denom = g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;
+  return (1 - g) * (1 + g) / (4 * kPi<Real> * denom * std::sqrt(denom));
+}
+
+template <typename Real>
+Real HenyeyGreenstein(Real g, Real cos) { return HenyeyGreenstein(g, 1 - cos, 1 + cos); }
+
+// The value at the lobe's peak (cos = 1 for g >= 0, cos = -1 for g < 0).
+template <typename Real>
+Real HenyeyGreensteinPeak(Real g) {
+  Real a = std::abs(g);
+  return (1 + a) / (4 * kPi<Real> * Sqr(1 - a));
+}
+
+// The cumulative distribution of cos, P(cos' <= cos); exact in the limit g -> 0.
+template <typename Real>
+Real InvertHenyeyGreenstein(Real g, Real cos) {
+  Real denom = g >= 0 ? Sqr(1 - g) + 2 * g * (1 - cos) : Sqr(1 + g) - 2 * g * (1 + cos);
+  Real s = std::sqrt(denom);
+  return Clamp((1 - g) * (1 + cos) / (s * (1 + g + s)), Real(0), Real(1));
+}
+
+// Returns 1 - cos for the cos that InvertHenyeyGreenstein maps to u; precise near cos = 1.
+template <typename Real>
+Real SampleHenyeyGreensteinOneMinusCos(Real g, Real u) {
+  Real v = 1 - u;  // v = P(cos' >= cos)
+  Real q = 1 + g - 2 * g * v;
+  Real s = (1 - g) * (1 + g) / q;
+  return Clamp(v * (1 - g) * (s + 1 - g) / q, Real(0), Real(2));
+}
+
+// Samples cos with density HenyeyGreenstein(g, cos) * 2 pi.
+template <typename Real>
+Real SampleHenyeyGreenstein(Real g, Real u) { return 1 - SampleHenyeyGreensteinOneMinusCos(g, u); }
+
+}  // namespace vrlis

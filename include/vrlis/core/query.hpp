@@ -1,0 +1,79 @@
+#pragma once
+// What a camera-segment sampler is asked: a segment, a point, and the two phase lobes
+// whose product it should follow.
+#include <cmath>
+
+#include "vec3.hpp"
+
+namespace vrlis {
+
+// The lobe at the point p, as a function of the direction d from p to the segment point.
+enum class LobeKind {
+  None,              // 1: a point light, or a lobe the caller accounts for itself
+  HenyeyGreenstein,  // HenyeyGreenstein(g, dot(axis, d)): a VRL point scattering light that travelled along axis
+  ClampedCosine,     // max(0, dot(axis, d)) / pi: a diffuse surface with normal axis
+};
+
+template <typename Real>
+struct PointLobe {
+  LobeKind kind = LobeKind::None;
+  Vec3<Real> axis{};  // unit length
+  Real g = 0;         // HenyeyGreenstein only
+};
+
+// The segment x(t) = origin + t dir, t in [tmin, tmax], seen from the point p. The lobe on
+// the segment is HenyeyGreenstein(g, dot(dir, normalize(p - x(t)))): for a camera segment,
+// light arriving from p and scattered back towards the camera.
+template <typename Real>
+struct SegmentQuery {
+  Vec3<Real> origin{}, dir{};  // dir unit length
+  Real tmin = 0, tmax = 0;     // tmin finite; tmax may be +infinity
+  Real g = 0;                  // the segment lobe, |g| < 1
+  Vec3<Real> point{};
+  PointLobe<Real> lobe{};
+  Real sigma_t = 0;  // homogeneous extinction, for samplers that model transmittance
+};
+
+enum class QueryError {
+  None,
+  NonFinite,          // a NaN or infinity where a finite number is required
+  NotUnitDirection,   // a direction whose length differs from 1 by more than 1e-3
+  ReversedSegment,    // tmax < tmin
+  InvalidAsymmetry,   // |g| >= 1
+  NegativeExtinction,
+};
+
+inline const char* Describe(QueryError e) {
+  switch (e) {
+    case QueryError::None: return "valid";
+    case QueryError::NonFinite: return "non-finite input";
+    case QueryError::NotUnitDirection: return "direction is not unit length";
+    case QueryError::ReversedSegment: return "segment has tmax < tmin";
+    case QueryError::InvalidAsymmetry: return "Henyey-Greenstein g outside (-1, 1)";
+    case QueryError::NegativeExtinction: return "negative extinction";
+  }
+  return "unknown";
+}
+
+namespace detail {
+template <typename Real>
+bool IsUnit(Vec3<Real> v) { return std::abs(Dot(v, v) - 1) <= Real(2e-3); }
+template <typename Real>
+bool IsAsymmetry(Real g) { return std::abs(g) < 1; }  // false for NaN too
+}  // namespace detail
+
+template <typename Real>
+QueryError Validate(const SegmentQuery<Real>& q) {
+  if (!IsFinite(q.origin) || !IsFinite(q.dir) || !IsFinite(q.point) || !IsFinite(q.lobe.axis) ||
+      !std::isfinite(q.tmin) || std::isnan(q.tmax) || !std::isfinite(q.sigma_t))
+    return QueryError::NonFinite;
+  if (!detail::IsUnit(q.dir) || (q.lobe.kind != LobeKind::None && !detail::IsUnit(q.lobe.axis)))
+    return QueryError::NotUnitDirection;
+  if (!(q.tmax >= q.tmin)) return QueryError::ReversedSegment;
+  if (!detail::IsAsymmetry(q.g) || (q.lobe.kind == LobeKind::HenyeyGreenstein && !detail::IsAsymmetry(q.lobe.g)))
+    return QueryError::InvalidAsymmetry;
+  if (q.sigma_t < 0) return QueryError::NegativeExtinction;
+  return QueryError::None;
+}
+
+}  // namespace vrlis

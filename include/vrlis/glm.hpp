@@ -1,0 +1,61 @@
+#pragma once
+// Optional adapter: builds vrlis queries from GLM vectors (needs GLM on the include path).
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "vrlis.hpp"
+
+namespace vrlis {
+
+template <typename Real, glm::qualifier Q>
+Vec3<Real> FromGlm(const glm::vec<3, Real, Q>& v) { return {v.x, v.y, v.z}; }
+
+template <typename Real>
+glm::vec<3, Real> ToGlm(const Vec3<Real>& v) { return {v.x, v.y, v.z}; }
+
+// Medium to medium: the camera segment origin + t dir, t in [tmin, tmax], gathering from the
+// VRL point vrl_point on a VRL travelling along vrl_dir; both scatter with HG(g).
+template <typename Real>
+SegmentQuery<Real> MediumQuery(const glm::vec<3, Real>& origin, const glm::vec<3, Real>& dir, Real tmin, Real tmax,
+                               const glm::vec<3, Real>& vrl_point, const glm::vec<3, Real>& vrl_dir, Real g,
+                               Real sigma_t = 0) {
+  SegmentQuery<Real> q;
+  q.origin = FromGlm(origin);
+  q.dir = FromGlm(glm::normalize(dir));
+  q.tmin = tmin;
+  q.tmax = tmax;
+  q.g = g;
+  q.point = FromGlm(vrl_point);
+  q.lobe = {LobeKind::HenyeyGreenstein, FromGlm(glm::normalize(vrl_dir)), g};
+  q.sigma_t = sigma_t;
+  return q;
+}
+
+// Medium to surface: the VRL origin + t dir, t in [tmin, tmax], seen from a diffuse surface
+// point with unit normal (facing the side the light arrives from).
+template <typename Real>
+SegmentQuery<Real> SurfaceQuery(const glm::vec<3, Real>& vrl_origin, const glm::vec<3, Real>& vrl_dir, Real tmin,
+                                Real tmax, const glm::vec<3, Real>& surface_point, const glm::vec<3, Real>& normal,
+                                Real g, Real sigma_t = 0) {
+  SegmentQuery<Real> q;
+  q.origin = FromGlm(vrl_origin);
+  q.dir = FromGlm(glm::normalize(vrl_dir));
+  q.tmin = tmin;
+  q.tmax = tmax;
+  q.g = g;
+  q.point = FromGlm(surface_point);
+  q.lobe = {LobeKind::ClampedCosine, FromGlm(glm::normalize(normal)), Real(0)};
+  q.sigma_t = sigma_t;
+  return q;
+}
+
+// Step one: a point on the VRL vrl_origin + v vrl_dir, v in [0, length], for the camera line.
+template <typename Real>
+VrlPointQuery<Real> VrlPointQueryFor(const glm::vec<3, Real>& vrl_origin, const glm::vec<3, Real>& vrl_dir,
+                                     Real length, const glm::vec<3, Real>& camera_origin,
+                                     const glm::vec<3, Real>& camera_dir) {
+  return {FromGlm(vrl_origin), FromGlm(glm::normalize(vrl_dir)), Real(0), length, FromGlm(camera_origin),
+          FromGlm(glm::normalize(camera_dir))};
+}
+
+}  // namespace vrlis

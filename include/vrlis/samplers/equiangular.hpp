@@ -1,0 +1,24 @@
+#pragma once
+// Equiangular sampling (Kulla and Fajardo 2012): uniform in theta. Exact for isotropic
+// media and the cost floor every other sampler is measured against.
+#include "../angle/segment_sampler.hpp"
+
+namespace vrlis {
+
+template <typename R>
+class UniformAngle {
+ public:
+  using Real = R;
+  UniformAngle(const SegmentQuery<Real>&, const AngleDomain<Real>& dom) : width_(dom.width()) {}
+  Real sample(Real u) const { return u * width_; }
+  Real pdf(Real) const { return 1 / width_; }
+  Real cdf(Real delta) const { return delta / width_; }
+
+ private:
+  Real width_;
+};
+
+template <typename Real = float>
+using Equiangular = SegmentSampler<UniformAngle<Real>>;
+
+}  // namespace vrlis

@@ -1,0 +1,115 @@
+#pragma once
+// Novák et al. 2012, anisotropic camera-segment sampling: a piecewise-linear approximation
+// of the phase product over kNodes nodes in the angle domain (section 4 of the maths note).
+//
+// If the point lobe's peak lies inside the interval the nodes are split there, and on each
+// side they follow a cosine-warped spacing, dense near both ends of the side. An interval
+// is chosen by its trapezoid area, then the linear density inside it is inverted.
+#include <array>
+
+#include "../angle/segment_sampler.hpp"
+
+namespace vrlis {
+
+// The u in [0, 1] with density proportional to lerp(u, f0, f1) whose CDF is v (the stable
+// root of the quadratic).
+template <typename Real>
+Real SampleLinear(Real v, Real f0, Real f1) {
+  Real denom = f0 + std::sqrt(Sqr(f0) + v * (Sqr(f1) - Sqr(f0)));
+  return denom > 0 ? Clamp(v * (f0 + f1) / denom, Real(0), Real(1)) : v;
+}
+
+template <typename R, int kNodes = 10>
+class PiecewiseLinearAngle {
+  static_assert(kNodes >= 3, "Novak's split needs at least one interval on each side");
+
+ public:
+  using Real = R;
+  PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
+    PhaseProduct<Real> target(q, dom);
+    Real width = dom.width(), peak = target.point_peak();
+    if (!target.point_lobe_flat() && peak > 0 && peak < width) {
+      int split = static_cast<int>(std::lround(peak / width * (kNodes - 1)));
+      split = Clamp(split, 1, kNodes - 2);
+      PlaceWarped(0, Real(0), peak, split);
+      PlaceWarped(split, peak, width, kNodes - 1 - split);
+    } else {
+      PlaceWarped(0, Real(0), width, kNodes - 1);
+    }
+    for (int j = 0; j < kNodes; ++j) value_[j] = target(node_[j]);
+    Accumulate();
+    if (!(cdf_[kNodes - 1] > 0) || !std::isfinite(cdf_[kNodes - 1])) {  // a target zero at every node
+      value_.fill(1);
+      Accumulate();
+    }
+  }
+
+  Real sample(Real u) const {
+    Real target = u * cdf_[kNodes - 1];
+    int j = 0;
+    while (j < kNodes - 2 && !(cdf_[j + 1] > target)) ++j;
+    Real area = cdf_[j + 1] - cdf_[j];
+    Real v = area > 0 ? Clamp((target - cdf_[j]) / area, Real(0), Real(1)) : Real(0);
+    return node_[j] + SampleLinear(v, value_[j], value_[j + 1]) * (node_[j + 1] - node_[j]);
+  }
+
+  Real pdf(Real delta) const {
+    int j = Interval(delta);
+    return Lerp(delta, j) / cdf_[kNodes - 1];
+  }
+
+  Real cdf(Real delta) const {
+    int j = Interval(delta);
+    Real partial = (value_[j] + Lerp(delta, j)) / 2 * (delta - node_[j]);
+    return (cdf_[j] + partial) / cdf_[kNodes - 1];
+  }
+
+  const std::array<Real, kNodes>& nodes() const { return node_; }
+
+ private:
+  // start + (end - start) (1 - cos(pi j / count)) / 2 for j = 0..count, written from index first.
+  void PlaceWarped(int first, Real start, Real end, int count) {
+    for (int j = 0; j <= count; ++j) node_[first + j] = start + (end - start) * WarpTable()[count][j];
+    node_[first + count] = end;  // exact, so the two sides of a split share the peak node
+  }
+
+  // (1 - cos(pi j / count)) / 2 = sin^2(pi j / (2 count)): fixed per node count, so computed once.
+  static const std::array<std::array<Real, kNodes>, kNodes>& WarpTable() {
+    static const auto table = [] {
+      std::array<std::array<Real, kNodes>, kNodes> t{};
+      for (int count = 1; count < kNodes; ++count)
+        for (int j = 0; j <= count; ++j)
+          t[count][j] = Real(Sqr(std::sin(3.14159265358979323846 * j / (2 * count))));
+      return t;
+    }();
+    return table;
+  }
+
+  void Accumulate() {
+    cdf_[0] = 0;
+    for (int j = 0; j + 1 < kNodes; ++j) cdf_[j + 1] = cdf_[j] + (value_[j] + value_[j + 1]) / 2 * (node_[j + 1] - node_[j]);
+  }
+
+  // The interval [node_j, node_j+1] holding delta (binary search).
+  int Interval(Real delta) const {
+    int lo = 0, hi = kNodes - 2;
+    while (lo < hi) {
+      int mid = (lo + hi + 1) / 2;
+      if (node_[mid] <= delta) lo = mid; else hi = mid - 1;
+    }
+    return lo;
+  }
+
+  Real Lerp(Real delta, int j) const {
+    Real span = node_[j + 1] - node_[j];
+    Real s = span > 0 ? Clamp((delta - node_[j]) / span, Real(0), Real(1)) : Real(0);
+    return value_[j] + s * (value_[j + 1] - value_[j]);
+  }
+
+  std::array<Real, kNodes> node_, value_, cdf_;
+};
+
+template <typename Real = float, int kNodes = 10>
+using Novak = SegmentSampler<PiecewiseLinearAngle<Real, kNodes>>;
+
+}  // namespace vrlis

@@ -1,0 +1,92 @@
+#pragma once
+// Step one of Novák's estimator: a point on the VRL with density proportional to the
+// inverse distance from the VRL point to the camera line (section 2 of the maths note),
+//   p(v) proportional to 1 / sqrt(1 + x(v)^2),  x(v) = k (v - v0),  k = sin(a) / h.
+// The CDF is asinh(x(v)) - asinh(x(tmin)), computed without cancellation.
+//
+// Contract: valid() is false for non-finite input (tmax too: the density's tail makes an
+// unbounded VRL unnormalisable), non-unit directions and tmax < tmin; then sample() and
+// invert() return NaN and pdf() returns 0. Parallel lines give the uniform density (the
+// limit k -> 0). Intersecting lines (h -> 0) have a non-integrable 1 / |v - v0| target;
+// h is floored at the rounding noise of the inputs, so the density is sharply peaked at
+// v0 but finite. A zero-length VRL samples tmin with pdf 0.
+#include <limits>
+
+#include "../core/math.hpp"
+#include "../core/vec3.hpp"
+
+namespace vrlis {
+
+template <typename Real>
+struct VrlPointQuery {
+  Vec3<Real> origin{}, dir{};  // the VRL y(v) = origin + v dir, dir unit length
+  Real tmin = 0, tmax = 0;     // both finite
+  Vec3<Real> line_origin{}, line_dir{};  // the camera line, line_dir unit length
+};
+
+template <typename R = float>
+class VrlPoint {
+ public:
+  using Real = R;
+  explicit VrlPoint(const VrlPointQuery<Real>& q) : tmin_(q.tmin), tmax_(q.tmax) {
+    valid_ = IsFinite(q.origin) && IsFinite(q.dir) && IsFinite(q.line_origin) && IsFinite(q.line_dir) &&
+             std::isfinite(q.tmin) && std::isfinite(q.tmax) && q.tmax >= q.tmin &&
+             std::abs(Dot(q.dir, q.dir) - 1) <= Real(2e-3) && std::abs(Dot(q.line_dir, q.line_dir) - 1) <= Real(2e-3);
+    if (!valid_) return;
+    Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
+    Real sin_a = Length(cross);
+    Real along = Dot(d, q.dir);
+    if (!(sin_a > 0)) return;  // parallel: uniform
+    Real h = std::abs(Dot(d, cross)) / sin_a;
+    h = std::max(h, NoiseFloor(Length(d) + std::abs(tmin_) + std::abs(tmax_)));
+    Real v0 = (along - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) / Sqr(sin_a);
+    k_ = sin_a / h;
+    xa_ = k_ * (tmin_ - v0);
+    total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
+    if (!(total_ > 0) || !std::isfinite(total_)) k_ = 0;  // uniform to the last digit
+  }
+
+  bool valid() const { return valid_; }
+
+  Real sample(Real u) const {
+    if (!valid_) return kNaN;
+    Real length = tmax_ - tmin_;
+    if (k_ == 0) return tmin_ + u * length;
+    Real d = u * total_, xb = xa_ + k_ * length, v;
+    if (xa_ >= 0)  // moving away from v0 from the near end: no cancellation
+      v = tmin_ + Outward(xa_, d) / k_;
+    else if (xb <= 0)
+      v = tmax_ - Outward(-xb, total_ - d) / k_;
+    else  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
+      v = tmin_ + (std::sinh(std::asinh(xa_) + d) - xa_) / k_;
+    return Clamp(v, tmin_, tmax_);
+  }
+
+  Real pdf(Real v) const {
+    if (!valid_ || !(v >= tmin_ && v <= tmax_) || !(tmax_ > tmin_)) return 0;
+    if (k_ == 0) return 1 / (tmax_ - tmin_);
+    Real x = xa_ + k_ * (v - tmin_);
+    return k_ / (total_ * std::sqrt(1 + x * x));
+  }
+
+  Real invert(Real v) const {
+    if (!valid_) return kNaN;
+    if (!(tmax_ > tmin_)) return 0;
+    v = Clamp(v, tmin_, tmax_);
+    if (k_ == 0) return (v - tmin_) / (tmax_ - tmin_);
+    return Clamp(AsinhDifference(xa_, k_ * (v - tmin_)) / total_, Real(0), Real(1));
+  }
+
+ private:
+  static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+  // sinh(asinh(x0) + d) - x0 for x0 >= 0, d >= 0, as a sum of positive terms.
+  static Real Outward(Real x0, Real d) {
+    return 2 * x0 * Sqr(std::sinh(d / 2)) + std::sqrt(1 + x0 * x0) * std::sinh(d);
+  }
+
+  Real tmin_, tmax_;
+  bool valid_ = false;
+  Real k_ = 0, xa_ = 0, total_ = 0;
+};
+
+}  // namespace vrlis

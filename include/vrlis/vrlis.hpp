@@ -1,0 +1,20 @@
+#pragma once
+// vrlis: importance sampling for anisotropic virtual ray lights. The whole core library.
+#include "core/phase.hpp"
+#include "core/query.hpp"
+#include "angle/angle_domain.hpp"
+#include "angle/phase_product.hpp"
+#include "angle/segment_sampler.hpp"
+#include "samplers/equiangular.hpp"
+#include "samplers/novak.hpp"
+#include "samplers/cauchy_sum.hpp"
+#include "samplers/cauchy_mixture.hpp"
+#include "samplers/vrl_point.hpp"
+#include "method.hpp"
+
+namespace vrlis {
+static_assert(IsSegmentSampler<Equiangular<float>>::value && IsSegmentSampler<Equiangular<double>>::value);
+static_assert(IsSegmentSampler<Novak<float>>::value && IsSegmentSampler<Novak<double>>::value);
+static_assert(IsSegmentSampler<CauchySum<float>>::value && IsSegmentSampler<CauchySum<double>>::value);
+static_assert(IsSegmentSampler<CauchyMixture<float>>::value && IsSegmentSampler<CauchyMixture<double>>::value);
+}  // namespace vrlis
