@@ -20,14 +20,14 @@ class AngleDomain {
     u0_ = Dot(d, q.dir);
     Vec3<Real> perp = d - u0_ * q.dir;
     h_ = Length(perp);
-    Real scale = Length(d) + std::abs(tmin_) + (std::isfinite(tmax_) ? std::abs(tmax_) : Real(0));
+    Real scale = std::abs(d.x) + std::abs(d.y) + std::abs(d.z) + std::abs(tmin_) + (std::isfinite(tmax_) ? std::abs(tmax_) : Real(0));
     Real floor = NoiseFloor(scale);
     // On (or within rounding of) the line the plane is arbitrary; any normal will do.
     n_ = h_ > floor ? (Real(1) / h_) * perp : AnyPerpendicular(q.dir);
     h_ = std::max(h_, floor);
     tan_a_ = (tmin_ - u0_) / h_;
     width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
-                                  : std::atan2(Real(1), tan_a_);
+                                  : Atan2(Real(1), tan_a_);
   }
 
   Real tmin() const { return tmin_; }
@@ -63,7 +63,7 @@ class AngleDomain {
 
  private:
   // atan(b) - atan(a) with b - a = db >= 0, from the argument of (1 + i b)(1 - i a).
-  Real OffsetOfSlope(Real db, Real b) const { return std::atan2(db, 1 + tan_a_ * b); }
+  Real OffsetOfSlope(Real db, Real b) const { return Atan2(db, 1 + tan_a_ * b); }
   // Samples must be finite even on an unbounded segment.
   Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
 

@@ -17,10 +17,10 @@ class PhaseProduct {
     // Offsets of theta = -pi/2 and +pi/2; pick the formula whose atan2 is small.
     Real A = dom.tan_theta_a();
     if (A >= 0) {
-      upper_ = std::atan2(Real(1), A);
+      upper_ = Atan2(Real(1), A);
       lower_ = upper_ - kPi<Real>;
     } else {
-      lower_ = -std::atan2(Real(1), -A);
+      lower_ = -Atan2(Real(1), -A);
       upper_ = lower_ + kPi<Real>;
     }
     if (kind_ == LobeKind::None) return;
@@ -29,14 +29,16 @@ class PhaseProduct {
     r_ = std::min(std::sqrt(a * a + b * b), Real(1));
     one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
     // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.
-    theta_e_ = std::atan2(b - A * a, a + A * b);
+    theta_e_ = Atan2(b - A * a, a + A * b);
   }
 
   Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
 
-  // HenyeyGreenstein(g, -sin theta): 1 -+ cos are 2 sin^2 of half the distance to a pole.
+  // HenyeyGreenstein(g, -sin theta) with scattering angle x = theta + pi/2 = delta - lower:
+  // 1 - cos = 2 sin^2(x/2) and 1 + cos = 2 cos^2(x/2), both exact near their zero.
   Real segment_lobe(Real delta) const {
-    return HenyeyGreenstein(g_, 2 * SinSqrHalf(delta - lower_), 2 * SinSqrHalf(upper_ - delta));
+    Real half = (delta - lower_) / 2;
+    return HenyeyGreenstein(g_, 2 * Sqr(std::sin(half)), 2 * Sqr(std::cos(half)));
   }
 
   Real point_lobe(Real delta) const {

@@ -64,8 +64,9 @@ bool IsAsymmetry(Real g) { return std::abs(g) < 1; }  // false for NaN too
 
 template <typename Real>
 QueryError Validate(const SegmentQuery<Real>& q) {
-  if (!IsFinite(q.origin) || !IsFinite(q.dir) || !IsFinite(q.point) || !IsFinite(q.lobe.axis) ||
-      !std::isfinite(q.tmin) || std::isnan(q.tmax) || !std::isfinite(q.sigma_t))
+  // x * 0 is 0 for finite x and NaN otherwise, so one comparison checks every input.
+  Vec3<Real> zeros = Real(0) * (q.origin + q.dir + q.point + q.lobe.axis);
+  if (!(zeros.x + zeros.y + zeros.z + 0 * q.tmin + 0 * q.sigma_t == 0) || std::isnan(q.tmax))
     return QueryError::NonFinite;
   if (!detail::IsUnit(q.dir) || (q.lobe.kind != LobeKind::None && !detail::IsUnit(q.lobe.axis)))
     return QueryError::NotUnitDirection;

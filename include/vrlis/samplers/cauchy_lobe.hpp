@@ -21,13 +21,13 @@ class TruncatedCauchy {
         scale_(scale),
         alpha_(scale + location * location / scale),
         beta_(-location / scale),
-        mass_(std::atan2(width, alpha_ + beta_ * width)),
+        mass_(Atan2(width, alpha_ + beta_ * width)),
         width_(width) {}
 
   // gamma / ((delta - mu)^2 + gamma^2): pi times the Cauchy density; integrates to mass().
   Real density(Real delta) const { return scale_ / (Sqr(delta - location_) + Sqr(scale_)); }
   // Its integral over [0, delta].
-  Real primitive(Real delta) const { return std::atan2(delta, alpha_ + beta_ * delta); }
+  Real primitive(Real delta) const { return Atan2(delta, alpha_ + beta_ * delta); }
   // The delta whose primitive is s, for s in [0, mass()].
   Real inverse_primitive(Real s) const {
     Real sn = std::sin(s), denom = std::cos(s) - beta_ * sn;
