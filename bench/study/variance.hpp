@@ -1,0 +1,140 @@
+#pragma once
+// Relative variances of the medium-to-medium estimator by numerical quadrature (section 6
+// of the maths note): Int f^2 / p / (Int f)^2 - 1, for every camera sampler at once.
+//
+// Camera step (VRL point y fixed): integrated over the sampler's own angle variable
+// delta = theta - theta_a, where du = d delta / J(u), J = dtheta/du, and the sampler's
+// density is p(u) = p_theta(delta) J(u):
+//   Int f du       = Int (f / J) d delta
+//   Int f^2 / p du = Int (f / J)^2 / p_theta d delta.
+// f / J = rho rho T T T / h is bounded: the inverse square is gone. The interval is split at
+// Novák's nodes (where its density has kinks), at both lobes' peaks and at a few multiples
+// of the lobes' widths around them, so g = 0.99 spikes are resolved.
+//
+// Whole estimator (VRL point by VrlPoint with density p1, then the camera point):
+//   E[(f / (p1 p2))^2] = Int dv (1 / p1) Int du f^2 / p2,
+// integrated over xi with v = VrlPoint.sample(xi), dv = d xi / p1, where p1 follows the
+// inverse distance to the camera line and cancels its singular part.
+//
+// Everything runs in double (the samplers are instantiated in double; speed is measured
+// in float elsewhere).
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "integrand.hpp"
+#include "quadrature.hpp"
+
+namespace vrlis::study {
+
+struct QuadratureSettings {
+  double inner_tol = 1e-7;   // relative, on the pessimistic G7 error
+  int inner_max = 40000;     // evaluations
+  double outer_tol = 1e-5;
+  int outer_max = 4000;      // outer evaluations (each one an inner quadrature)
+};
+
+struct Moments {
+  double first = 0;                                    // Int f
+  std::array<double, kCameraSamplerCount> second{};    // Int f^2 / p, per sampler
+  double rel_error = 0;                                // largest estimated relative error
+  int evaluations = 0;                                 // integrand evaluations
+  bool converged = true;
+
+  double RelativeVariance(int k) const { return second[k] / (first * first) - 1; }
+};
+
+// The breakpoints of the camera-step quadrature for one query, in delta.
+inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const AngleDomain<double>& dom,
+                                        const Novak<double>& novak) {
+  double width = dom.width();
+  std::vector<double> breaks = {0, width};
+  for (double node : novak.distribution().nodes()) breaks.push_back(node);
+  PhaseProduct<double> target(q, dom);
+  double a = std::abs(q.g);
+  double cauchy = 4 * (1 - a) * (1 - a) / (1 + a);  // the seed's Cauchy scale at the segment lobe's peak
+  const double offsets[] = {0, cauchy, 4 * cauchy, 1 - a, 4 * (1 - a), 16 * (1 - a)};
+  for (double peak : {target.point_peak(), target.segment_peak()})
+    for (double o : offsets)
+      for (double x : {peak - o, peak + o})
+        if (x > 0 && x < width) breaks.push_back(x);
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<double> kept;
+  for (double x : breaks)
+    if (kept.empty() || x - kept.back() > 1e-13 * width) kept.push_back(x);
+  kept.back() = width;
+  return kept;
+}
+
+// Camera step for the VRL point y = y(v): Int f du and Int f^2 / p du for every sampler.
+inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSettings& s = {}) {
+  Vec3<double> y = VrlPointAt(p, v);
+  SegmentQuery<double> q = CameraQuery(p, y);
+  Equiangular<double> eq(q);
+  Novak<double> nv(q);
+  CauchySum<double> cs(q);
+  CauchyMixture<double> cm(q);
+  const AngleDomain<double>& dom = eq.domain();
+  Moments m;
+  if (!eq.valid() || !(dom.width() > 0)) return m;
+  auto integrand = [&](double delta) {
+    double u = dom.t_at(delta);
+    double fj = IntegrandAt(p, u, y, v) / dom.dtheta_dt(u);
+    double f2 = fj * fj;
+    return std::array<double, 5>{fj, f2 / eq.distribution().pdf(delta), f2 / nv.distribution().pdf(delta),
+                                 f2 / cs.distribution().pdf(delta), f2 / cm.distribution().pdf(delta)};
+  };
+  auto r = Integrate<5>(integrand, CameraBreaks(q, dom, nv), s.inner_tol, s.inner_max);
+  m.first = r.value[0];
+  for (int k = 0; k < kCameraSamplerCount; ++k) m.second[k] = r.value[k + 1];
+  for (int n = 0; n < 5; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
+  m.evaluations = r.evaluations;
+  m.converged = r.converged;
+  return m;
+}
+
+// The camera step alone, at the pair's fixed VRL point VrlPoint.sample(xi_vrl).
+inline Moments CameraStepMoments(const Pair<double>& p, const QuadratureSettings& s = {}) {
+  VrlPoint<double> vp(VrlQuery(p));
+  return CameraMoments(p, vp.sample(p.xi_vrl), s);
+}
+
+// The whole two-step estimator f(u, v) / (p1(v) p2(u | v)).
+inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s = {}) {
+  VrlPoint<double> vp(VrlQuery(p));
+  Moments m;
+  int inner_evaluations = 0;
+  bool inner_converged = true;
+  double inner_error = 0;
+  auto integrand = [&](double xi) {
+    double v = vp.sample(xi), p1 = vp.pdf(v);
+    Moments c = CameraMoments(p, v, s);
+    inner_evaluations += c.evaluations;
+    inner_converged = inner_converged && c.converged;
+    inner_error = std::max(inner_error, c.rel_error);
+    std::array<double, 5> out{c.first / p1};
+    for (int k = 0; k < kCameraSamplerCount; ++k) out[k + 1] = c.second[k] / (p1 * p1);
+    return out;
+  };
+  // Eight even pieces plus the VRL parameter closest to the camera line: Novák's node layout
+  // jumps with v, so the outer integrand has steps that the adaptivity must find.
+  std::vector<double> breaks;
+  for (int i = 0; i <= 8; ++i) breaks.push_back(i / 8.0);
+  Vec3<double> c = Cross(p.wl, p.wc);
+  double sin2 = Dot(c, c);
+  if (sin2 > 1e-12) {
+    Vec3<double> d = p.xc - p.xl;
+    double v0 = (Dot(d, p.wl) - Dot(d, p.wc) * Dot(p.wl, p.wc)) / sin2;
+    if (v0 > 0 && v0 < p.t) breaks.push_back(vp.invert(v0));
+  }
+  auto r = Integrate<5>(integrand, breaks, s.outer_tol, s.outer_max);
+  m.first = r.value[0];
+  for (int k = 0; k < kCameraSamplerCount; ++k) m.second[k] = r.value[k + 1];
+  for (int n = 0; n < 5; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
+  m.rel_error = std::max(m.rel_error, inner_error);
+  m.evaluations = inner_evaluations;
+  m.converged = r.converged && inner_converged;
+  return m;
+}
+
+}  // namespace vrlis::study
