@@ -1,0 +1,43 @@
+#pragma once
+// The pipeline's Geometry implemented with Embree 3: quads and spheres.
+#include <embree3/rtcore.h>
+
+#include <vector>
+
+#include <vrlis_integration/scene.hpp>
+
+namespace vrl_render {
+
+class EmbreeGeometry : public vrli::Geometry {
+ public:
+  EmbreeGeometry();
+  ~EmbreeGeometry() override;
+  EmbreeGeometry(const EmbreeGeometry&) = delete;
+  EmbreeGeometry& operator=(const EmbreeGeometry&) = delete;
+
+  // Corners in order around the quad.
+  void AddQuad(vrli::Vec3f a, vrli::Vec3f b, vrli::Vec3f c, vrli::Vec3f d, int material);
+  // The six faces of an axis-aligned box.
+  void AddBox(vrli::Vec3f lo, vrli::Vec3f hi, int material);
+  void AddSphere(vrli::Vec3f center, float radius, int material);
+  void Commit();  // after the last Add
+
+  bool Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHit* hit) const override;
+  bool Occluded(vrli::Vec3f p0, vrli::Vec3f p1) const override;
+
+ private:
+  struct Sphere {
+    vrli::Vec3f center;
+    float radius;
+    int material;
+  };
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  std::vector<vrli::Vec3f> quad_vertices_;
+  std::vector<int> quad_materials_;
+  std::vector<Sphere> spheres_;
+  unsigned quad_geometry_ = RTC_INVALID_GEOMETRY_ID;
+  std::vector<int> sphere_of_geometry_;  // geometry id -> index into spheres_, or -1
+};
+
+}  // namespace vrl_render

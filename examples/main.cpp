@@ -1,0 +1,193 @@
+// vrl_render: renders one of the four comparison scenes with the bidirectional VRL
+// pipeline (or the reference path tracer) and writes EXR, PNG and a JSON summary.
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include <vrlis_integration/renderer.hpp>
+
+#include "image_io.hpp"
+#include "scenes.hpp"
+
+namespace {
+
+constexpr int kUsageError = 2;
+
+int Fail(const std::string& message) {
+  std::fprintf(stderr, "vrl_render: error: %s\n", message.c_str());
+  return kUsageError;
+}
+
+std::string JoinNames() {
+  std::string s;
+  for (auto n : vrl_render::kSceneNames) s += (s.empty() ? "" : ", ") + std::string(n);
+  return s;
+}
+
+std::string SamplerNames() {
+  std::string s;
+  for (auto m : vrlis::kMethods) s += (s.empty() ? "" : ", ") + std::string(vrlis::Name(m));
+  return s;
+}
+
+void Progress(double fraction, int passes) {
+  const int width = 40;
+  int filled = static_cast<int>(std::lround(std::min(1.0, fraction) * width));
+  std::fprintf(stderr, "\r[%s%s] %3d%%  %d passes", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+               std::string(static_cast<std::size_t>(width - filled), ' ').c_str(),
+               static_cast<int>(std::lround(100 * std::min(1.0, fraction))), passes);
+  std::fflush(stderr);
+}
+
+double Rmse(const vrli::Film& a, const vrli::Film& b) {
+  double sum = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const vrli::Spectrum &p = a.pixels[i], &q = b.pixels[i];
+    sum += (double(p.r) - q.r) * (double(p.r) - q.r) + (double(p.g) - q.g) * (double(p.g) - q.g) +
+           (double(p.b) - q.b) * (double(p.b) - q.b);
+  }
+  return std::sqrt(sum / (3.0 * static_cast<double>(a.pixels.size())));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string scene_name, sampler = "cauchy-sum", integrator = "vrl", gather = "all", out = "render.exr", reference;
+  std::optional<float> g, sigma_s, sigma_a, exposure;
+  int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
+  double seconds = 0;
+  std::uint64_t seed = 1;
+  bool no_jitter = false, no_caustics = false, quiet = false;
+
+  CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
+               "OpenEXR), a tonemapped sRGB PNG and a JSON summary beside it. Usage errors exit with code 2."};
+  app.add_option("--scene", scene_name, "Scene: " + JoinNames())->required();
+  app.add_option("--sampler", sampler, "Camera-segment sampler: " + SamplerNames())->capture_default_str();
+  app.add_option("--integrator", integrator, "vrl (the VRL pipeline) or path (the reference path tracer)")
+      ->capture_default_str();
+  app.add_option("--gather", gather, "all (full transport), m2m (VRL medium-to-medium only) or m2s "
+                                     "(VRL medium-to-surface only)")->capture_default_str();
+  app.add_option("--g", g, "Henyey-Greenstein asymmetry in (-1, 1) (default: the scene's)");
+  app.add_option("--sigma-s", sigma_s, "Scattering coefficient >= 0 (default: the scene's)");
+  app.add_option("--sigma-a", sigma_a, "Absorption coefficient >= 0 (default: the scene's)");
+  app.add_option("--width", width, "Image width in pixels")->capture_default_str();
+  app.add_option("--height", height, "Image height in pixels")->capture_default_str();
+  auto* spp_opt = app.add_option("--spp", spp, "Progressive passes (one sample per pixel and a fresh set "
+                                               "of light paths each)")->capture_default_str();
+  app.add_option("--time", seconds, "Render for this many seconds instead of --spp passes")->excludes(spp_opt);
+  app.add_option("--vrls", vrls, "Light paths per pass")->capture_default_str();
+  app.add_option("--seed", seed, "Random seed: the same seed gives the same image at any thread count")
+      ->capture_default_str();
+  app.add_option("--threads", threads, "Worker threads (0: all cores)")->capture_default_str();
+  app.add_option("--out", out, "Output EXR path; the .png and .json share its stem")->capture_default_str();
+  app.add_option("--reference", reference, "A converged EXR of the same size: report the RMSE against it");
+  app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)");
+  app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");
+  app.add_flag("--no-caustics", no_caustics, "Stop light paths at a specular surface met before any "
+                                             "scattering (what a path tracer with point lights can render)");
+  app.add_flag("--quiet", quiet, "No progress bar");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "vrl_render: error: %s (see --help)\n", e.what());
+    return kUsageError;
+  }
+
+  // Validate everything before any work or output.
+  auto method = vrlis::ParseMethod(sampler);
+  if (!method) return Fail("unknown sampler '" + sampler + "' (expected " + SamplerNames() + ")");
+  if (integrator != "vrl" && integrator != "path") return Fail("unknown integrator '" + integrator + "' (expected vrl or path)");
+  if (gather != "all" && gather != "m2m" && gather != "m2s") return Fail("unknown gather '" + gather + "' (expected all, m2m or m2s)");
+  if (g && !(std::abs(*g) < 1)) return Fail("--g must lie in (-1, 1), got " + std::to_string(*g));
+  if (sigma_s && !(*sigma_s >= 0 && std::isfinite(*sigma_s))) return Fail("--sigma-s must be finite and >= 0");
+  if (sigma_a && !(*sigma_a >= 0 && std::isfinite(*sigma_a))) return Fail("--sigma-a must be finite and >= 0");
+  if (width < 1 || height < 1) return Fail("--width and --height must be positive");
+  if (width > 16384 || height > 16384) return Fail("--width and --height must be at most 16384");
+  if (spp < 1) return Fail("--spp must be positive");
+  if (app.count("--time") && !(seconds > 0 && std::isfinite(seconds))) return Fail("--time must be positive");
+  if (vrls < 1) return Fail("--vrls must be positive");
+  if (threads < 0) return Fail("--threads must be >= 0");
+  if (exposure && !(*exposure > 0 && std::isfinite(*exposure))) return Fail("--exposure must be positive");
+  auto built = vrl_render::BuildScene(scene_name, {g, sigma_s, sigma_a});
+  if (!built) return Fail("unknown scene '" + scene_name + "' (expected " + JoinNames() + ")");
+  std::optional<vrli::Film> ref;
+  if (!reference.empty()) {
+    std::string err;
+    ref = vrl_render::ReadExr(reference, &err);
+    if (!ref) return Fail("cannot read reference '" + reference + "': " + err);
+    if (ref->width != width || ref->height != height) return Fail("reference '" + reference + "' is not " + std::to_string(width) + "x" + std::to_string(height));
+  }
+  std::string stem = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0 ? out.substr(0, out.size() - 4) : out;
+  const std::string png = stem + ".png", json_path = stem + ".json";
+  for (const std::string& p : {out, png, json_path})
+    if (!vrl_render::CanWrite(p)) return Fail("cannot write output file '" + p + "'");
+
+  vrli::RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.vrls_per_pass = vrls;
+  settings.jitter = !no_jitter;
+  settings.transport = built->transport;
+  settings.transport.light_caustics = !no_caustics;
+  if (gather != "all") {
+    settings.transport.medium_to_medium = gather == "m2m";
+    settings.transport.medium_to_surface = gather == "m2s";
+    settings.transport.direct = settings.transport.indirect = false;
+  }
+  const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(workers));
+  std::unique_ptr<vrli::Renderer> renderer;
+  if (integrator == "vrl")
+    renderer = std::make_unique<vrli::VrlRenderer>(built->scene, settings);
+  else
+    renderer = std::make_unique<vrli::PathTracingRenderer>(built->scene, settings);
+
+  const bool bar = !quiet && isatty(STDERR_FILENO);
+  const bool timed = app.count("--time") > 0;
+  vrli::Accumulator acc(width, height);
+  std::uint64_t vrl_count = 0, gathers = 0;
+  double pass_seconds = 0;
+  auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  for (int pass = 0;; ++pass) {
+    if (timed ? (pass > 0 && elapsed() >= seconds) : pass >= spp) break;
+    vrli::PassStats stats;
+    acc.Add(renderer->RenderPass(*method, seed, static_cast<std::uint64_t>(pass), &stats));
+    vrl_count += stats.vrls;
+    gathers += stats.gathers;
+    pass_seconds += stats.seconds;
+    if (bar) Progress(timed ? elapsed() / seconds : double(pass + 1) / spp, pass + 1);
+  }
+  if (bar) std::fprintf(stderr, "\n");
+  const double wall = elapsed();
+  vrli::Film image = acc.Mean();
+
+  nlohmann::json summary = {
+      {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather},
+      {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
+      {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
+      {"jitter", !no_jitter}, {"caustics", !no_caustics}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
+      {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds},
+      {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
+  if (timed) summary["time_budget_s"] = seconds;
+  if (ref) summary["rmse"] = Rmse(image, *ref);
+  std::string err;
+  if (!vrl_render::WriteExr(out, image, &err) ||
+      !vrl_render::WritePng(png, image, exposure ? *exposure : vrl_render::AutoExposure(image), &err) ||
+      !vrl_render::WriteText(json_path, summary.dump(2) + "\n", &err)) {
+    std::fprintf(stderr, "vrl_render: error: %s\n", err.c_str());
+    return 1;
+  }
+  if (!quiet) std::printf("%s\n", summary.dump().c_str());
+  return 0;
+}

@@ -1,0 +1,120 @@
+#include "scenes.hpp"
+
+#include <memory>
+
+#include "embree_geometry.hpp"
+
+namespace vrl_render {
+namespace {
+
+using vrli::Material;
+using vrli::MaterialKind;
+using vrli::Spectrum;
+using vrli::Vec3f;
+
+int AddMaterial(vrli::Scene& s, Material m) {
+  s.materials.push_back(m);
+  return static_cast<int>(s.materials.size()) - 1;
+}
+int Diffuse(vrli::Scene& s, Spectrum albedo) { return AddMaterial(s, {MaterialKind::Diffuse, albedo, 1.5f}); }
+
+// An axis-aligned room [lo, hi] seen from inside, with its own material per wall.
+void AddRoom(EmbreeGeometry& g, Vec3f lo, Vec3f hi, int left, int right, int floor, int ceiling, int back,
+             int front) {
+  auto c = [&](int x, int y, int z) { return Vec3f{x ? hi.x : lo.x, y ? hi.y : lo.y, z ? hi.z : lo.z}; };
+  g.AddQuad(c(0, 0, 0), c(0, 1, 0), c(0, 1, 1), c(0, 0, 1), left);
+  g.AddQuad(c(1, 0, 0), c(1, 0, 1), c(1, 1, 1), c(1, 1, 0), right);
+  g.AddQuad(c(0, 0, 0), c(0, 0, 1), c(1, 0, 1), c(1, 0, 0), floor);
+  g.AddQuad(c(0, 1, 0), c(1, 1, 0), c(1, 1, 1), c(0, 1, 1), ceiling);
+  g.AddQuad(c(0, 0, 0), c(1, 0, 0), c(1, 1, 0), c(0, 1, 0), back);
+  g.AddQuad(c(0, 0, 1), c(0, 1, 1), c(1, 1, 1), c(1, 0, 1), front);
+}
+
+void Bidirectional(BuiltScene& b, EmbreeGeometry&) {
+  b.scene.medium = {0.25f, 0.1f, -0.9f};
+  b.scene.medium.max_distance = 14.f / b.scene.medium.SigmaT();  // set again after overrides
+  b.scene.lights.points.push_back({{0, 0, -2}, Spectrum(2.f), true});
+  b.transport.first_segment_only = true;
+  b.transport.medium_to_surface = b.transport.direct = b.transport.indirect = false;
+}
+
+void Room(BuiltScene& b, EmbreeGeometry& g) {
+  vrli::Scene& s = b.scene;
+  int grey = Diffuse(s, Spectrum(0.5f));
+  int orange = Diffuse(s, {1, 0.5f, 0}), cyan = Diffuse(s, {0, 1, 1});
+  AddRoom(g, {-2.55f, -2.5f, -4.5f}, {2.55f, 2.5f, 0.5f}, orange, cyan, grey, grey, grey, grey);
+  g.AddBox({0.25f, -2.5f, -3.75f}, {1.75f, -1, -2.75f}, grey);
+  g.AddBox({-1.75f, -2.5f, -4.5f}, {-0.25f, 0.5f, -3.75f}, grey);
+  s.medium = {0.01f, 0.1f, 0.5f};
+  Vec3f dir = vrli::Normalize(Vec3f{-0.1f, -1, 0.075f});
+  for (auto [x0, x1] : {std::pair{-0.65f, -0.495f}, {-0.425f, -0.27f}, {-0.2f, -0.045f}, {0.025f, 0.18f}})
+    s.lights.rects.push_back({{x0, 2.5f, -3.5f}, {x1 - x0, 0, 0}, {0, 0, 0.32f}, dir, Spectrum(20.f)});
+}
+
+void Cube(BuiltScene& b, EmbreeGeometry& g) {
+  vrli::Scene& s = b.scene;
+  int grey = Diffuse(s, Spectrum(0.5f));
+  int red = Diffuse(s, {0.75f, 0.1f, 0.1f}), green = Diffuse(s, {0.1f, 0.75f, 0.1f});
+  AddRoom(g, {-2.75f, -2.5f, -5.5f}, {2.75f, 3.0f, 0.5f}, red, green, grey, grey, grey, grey);
+  g.AddSphere({-0.75f, -1.45f, -4.4f}, 1.05f, AddMaterial(s, {MaterialKind::Mirror, Spectrum(0.95f), 1.5f}));
+  g.AddSphere({2.0f, -2.05f, -3.7f}, 0.5f, AddMaterial(s, {MaterialKind::Glass, Spectrum(1.f), 1.5f}));
+  g.AddSphere({-1.75f, -1.95f, -3.1f}, 0.6f, Diffuse(s, {0, 0, 1}));
+  s.medium = {0.1f, 0.5f, 0.5f};
+  s.medium.bounded = true;
+  s.medium.lo = {-0.75f, -1.75f, -3.75f};
+  s.medium.hi = {0.75f, -0.25f, -2.25f};
+  s.lights.points.push_back({{0, 1.9f, -3}, Spectrum(6.f), false});
+}
+
+void Corner(BuiltScene& b, EmbreeGeometry& g) {
+  vrli::Scene& s = b.scene;
+  int grey = Diffuse(s, Spectrum(0.5f));
+  struct Plane {
+    Vec3f n;
+    float d;
+    int material;
+  };
+  const Plane planes[] = {
+      {{0.973562f, -0.226953f, -0.025893f}, 5.2f, Diffuse(s, {1, 0.506f, 0})},
+      {{-0.973562f, 0.226953f, 0.025893f}, 0.3f, Diffuse(s, {0, 0.949f, 1})},
+      {{-0.105381f, 0.974352f, 0.198829f}, 0.4f, grey},
+      {{0.105381f, -0.974352f, -0.198829f}, 5.1f, grey},
+      {{-0.122788f, 0.007596f, 0.992404f}, 1.5f, grey},
+      {{0.122788f, -0.007596f, -0.992404f}, 4.0f, grey},
+  };
+  for (const Plane& p : planes) {  // n . x + d = 0 as a large quad: rays stay inside
+    vrli::Frame f(vrli::Normalize(p.n));
+    Vec3f c = (-p.d) * p.n;
+    const float r = 40;
+    g.AddQuad(c + r * (f.x + f.y), c + r * (f.y - f.x), c - r * (f.x + f.y), c + r * (f.x - f.y), p.material);
+  }
+  g.AddSphere({0, 0, -0.8f}, 0.25f, Diffuse(s, Spectrum(0.9f)));
+  s.medium = {0.5f, 0.65f, 0.5f};
+  s.lights.points.push_back({{-2.45f, 2.35f, 1.25f}, Spectrum(60.f), false});
+  s.camera.fov_x = vrli::kPi / 3;
+}
+
+}  // namespace
+
+std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverrides& o) {
+  using Builder = void (*)(BuiltScene&, EmbreeGeometry&);
+  Builder builder = name == "bidirectional" ? Bidirectional
+                    : name == "room"        ? Room
+                    : name == "cube"        ? Cube
+                    : name == "corner"      ? Corner
+                                            : nullptr;
+  if (!builder) return std::nullopt;
+  auto geometry = std::make_shared<EmbreeGeometry>();
+  BuiltScene b;
+  builder(b, *geometry);
+  geometry->Commit();
+  b.scene.geometry = geometry;
+  vrli::HomogeneousMedium& m = b.scene.medium;
+  if (o.g) m.g = *o.g;
+  if (o.sigma_s) m.sigma_s = *o.sigma_s;
+  if (o.sigma_a) m.sigma_a = *o.sigma_a;
+  if (name == "bidirectional") m.max_distance = m.SigmaT() > 0 ? 14.f / m.SigmaT() : 100.f;
+  return b;
+}
+
+}  // namespace vrl_render

@@ -1,0 +1,27 @@
+#pragma once
+// The four scenes of docs/scenes.md (shared/docs), built on Embree.
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include <vrlis_integration/scene.hpp>
+#include <vrlis_integration/transport.hpp>
+
+namespace vrl_render {
+
+inline constexpr std::array<std::string_view, 4> kSceneNames = {"bidirectional", "room", "cube", "corner"};
+
+// Overrides of a scene's medium.
+struct MediumOverrides {
+  std::optional<float> g, sigma_s, sigma_a;
+};
+
+struct BuiltScene {
+  vrli::Scene scene;
+  vrli::TransportSettings transport;  // what the scene renders by default
+};
+
+// Empty for an unknown name.
+std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverrides& overrides);
+
+}  // namespace vrl_render

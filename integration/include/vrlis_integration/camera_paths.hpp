@@ -1,0 +1,24 @@
+#pragma once
+// The camera pass of the VRL renderer: one camera path per pixel sample, following the
+// specular chain from the camera to its first diffuse or medium vertex, gathering every
+// VRL on the way (docs/renderer.md describes the decomposition).
+#include <cstdint>
+#include <vector>
+
+#include <vrlis/method.hpp>
+
+#include "scene.hpp"
+#include "transport.hpp"
+#include "vrl.hpp"
+
+namespace vrli {
+
+struct GatherCount {
+  std::uint64_t medium_to_medium = 0, medium_to_surface = 0;
+  std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
+};
+
+Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, vrlis::Method method,
+                     const std::vector<Vrl>& vrls, Ray ray, Rng& rng, GatherCount* count);
+
+}  // namespace vrli

@@ -1,0 +1,109 @@
+#pragma once
+// Vectors, colours, rays and random numbers shared by the whole pipeline.
+#include <vrlis/core/phase.hpp>
+#include <vrlis/core/vec3.hpp>
+
+#include <pcg_random.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace vrli {
+
+using Vec3f = vrlis::Vec3<float>;
+using vrlis::Cross;
+using vrlis::Dot;
+using vrlis::Length;
+using vrlis::Normalize;
+
+inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// Rays start this far from their origin so that they do not hit the surface they leave.
+inline constexpr float kRayEpsilon = 1e-4f;
+
+// Linear RGB radiometric quantity.
+struct Spectrum {
+  float r = 0, g = 0, b = 0;
+  Spectrum() = default;
+  constexpr Spectrum(float r_, float g_, float b_) : r(r_), g(g_), b(b_) {}
+  explicit constexpr Spectrum(float v) : r(v), g(v), b(v) {}
+  Spectrum& operator+=(Spectrum o) { r += o.r; g += o.g; b += o.b; return *this; }
+  Spectrum& operator*=(Spectrum o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
+  Spectrum& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+  float MaxComponent() const { return std::max({r, g, b}); }
+  float Average() const { return (r + g + b) / 3; }
+  bool IsBlack() const { return r == 0 && g == 0 && b == 0; }
+};
+inline Spectrum operator+(Spectrum a, Spectrum b) { return a += b; }
+inline Spectrum operator*(Spectrum a, Spectrum b) { return a *= b; }
+inline Spectrum operator*(Spectrum a, float s) { return a *= s; }
+inline Spectrum operator*(float s, Spectrum a) { return a *= s; }
+
+struct Ray {
+  Vec3f o, d;  // d unit length
+  Vec3f operator()(float t) const { return o + t * d; }
+};
+
+// A PCG32 stream named by (seed, pass, index, purpose): never by a thread, so images do
+// not depend on the thread count.
+enum class StreamPurpose : std::uint64_t { Camera = 1, LightPath = 2 };
+
+inline std::uint64_t SplitMix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+class Rng {
+ public:
+  Rng(std::uint64_t seed, std::uint64_t pass, std::uint64_t index, StreamPurpose purpose)
+      : pcg_(SplitMix64(seed ^ SplitMix64(pass + 0x51ed2701ull * static_cast<std::uint64_t>(purpose))),
+             SplitMix64(index)) {}
+  // Uniform in [0, 1).
+  float Uniform() { return std::min(std::ldexp(static_cast<float>(pcg_() >> 8), -24), 0x1.fffffep-1f); }
+
+ private:
+  pcg32 pcg_;
+};
+
+// An orthonormal frame around a unit vector.
+struct Frame {
+  Vec3f x, y, z;
+  explicit Frame(Vec3f n) : x(vrlis::AnyPerpendicular(n)), y(Cross(n, x)), z(n) {}
+  Vec3f FromLocal(float a, float b, float c) const { return a * x + b * y + c * z; }
+};
+
+inline Vec3f SphericalDirection(const Frame& f, float cos_theta, float phi) {
+  float sin_theta = std::sqrt(std::max(0.f, 1 - cos_theta * cos_theta));
+  return f.FromLocal(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
+}
+
+inline Vec3f SampleUniformSphere(float u1, float u2) {
+  return SphericalDirection(Frame({0, 0, 1}), 1 - 2 * u1, 2 * kPi * u2);
+}
+
+// Cosine-weighted direction about n: density max(0, n . w) / pi.
+inline Vec3f SampleCosineHemisphere(Vec3f n, float u1, float u2) {
+  return SphericalDirection(Frame(n), std::sqrt(1 - u1), 2 * kPi * u2);
+}
+
+// Henyey-Greenstein phase function, cos between the directions light travels before and
+// after scattering.
+inline float Phase(float g, float cos) { return vrlis::HenyeyGreenstein(g, std::clamp(cos, -1.f, 1.f)); }
+
+// A new direction of travel for light travelling along w, with density Phase(g, w . w').
+inline Vec3f SamplePhase(float g, Vec3f w, float u1, float u2) {
+  return SphericalDirection(Frame(w), vrlis::SampleHenyeyGreenstein(g, u1), 2 * kPi * u2);
+}
+
+// The i-th of n points of a spherical Fibonacci lattice.
+inline Vec3f FibonacciDirection(int i, int n) {
+  const float golden = 2.39996322972865332f;  // pi (3 - sqrt 5)
+  float z = 1 - (2 * i + 1) / static_cast<float>(n);
+  return SphericalDirection(Frame({0, 0, 1}), z, golden * i);
+}
+
+}  // namespace vrli

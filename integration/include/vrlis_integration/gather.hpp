@@ -1,0 +1,32 @@
+#pragma once
+// The VRL estimators (section 1 of the maths note), one sample each, with the library's
+// samplers, and single scattering from point lights along a camera segment.
+#include <vrlis/method.hpp>
+
+#include "scene.hpp"
+#include "vrl.hpp"
+
+namespace vrli {
+
+// The part of a camera ray inside the medium: x(u) = ray(u), u in [iv.a, iv.b]. The
+// transmittance from x(u) back to the ray origin is exp(-sigma_t (u - iv.a)).
+struct CameraSegment {
+  Ray ray;
+  Interval iv;
+};
+
+// Radiance along the camera ray from light scattered at a VRL point and again on the
+// segment: VRL point by VrlPoint, camera point by `method`.
+Spectrum GatherMediumToMedium(vrlis::Method method, const Scene& scene, const CameraSegment& seg,
+                              const Vrl& vrl, Rng& rng);
+
+// Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
+// albedo) from light scattered on the VRL: the VRL point by `method`.
+Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
+                               const Vrl& vrl, Rng& rng);
+
+// Single scattering along the segment from every light (point lights: the camera point by
+// `method`; collimated lights: uniform in distance).
+Spectrum SingleScattering(vrlis::Method method, const Scene& scene, const CameraSegment& seg, Rng& rng);
+
+}  // namespace vrli

@@ -1,0 +1,18 @@
+#pragma once
+// The light pass: trace light paths from the lights and record every medium segment as a
+// VRL.
+#include <cstdint>
+#include <vector>
+
+#include "scene.hpp"
+#include "transport.hpp"
+#include "vrl.hpp"
+
+namespace vrli {
+
+// `count` light paths of one pass, each starting with flux (light power / count); the VRLs
+// come out in path order, whatever the thread count.
+std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
+                                 std::uint64_t seed, std::uint64_t pass);
+
+}  // namespace vrli

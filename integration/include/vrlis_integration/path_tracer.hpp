@@ -1,0 +1,24 @@
+#pragma once
+// A volumetric path tracer with next-event estimation: free-flight distance sampling,
+// phase-function and cosine sampling, Russian roulette. It is the reference renderer, and
+// the VRL renderer's `indirect` part continues paths with it.
+#include "scene.hpp"
+#include "transport.hpp"
+
+namespace vrli {
+
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const TransportSettings& transport) : scene_(scene), tr_(transport) {}
+
+  // Radiance arriving at ray.o along -ray.d. `depth` counts the interactions already on
+  // the path; with `skip_first_medium` the first segment only attenuates (its medium
+  // vertices are someone else's: the VRL gathers').
+  Spectrum Li(Ray ray, Rng& rng, int depth = 0, bool skip_first_medium = false) const;
+
+ private:
+  const Scene& scene_;
+  TransportSettings tr_;
+};
+
+}  // namespace vrli

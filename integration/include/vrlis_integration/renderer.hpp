@@ -1,0 +1,57 @@
+#pragma once
+// Progressive renderers: each call renders one independent pass (one sample per pixel,
+// and for the VRL renderer a fresh set of light paths) from (seed, pass) alone, so that a
+// driver can interleave passes of several samplers, or renderers, in one process and the
+// result does not depend on the thread count.
+#include <cstdint>
+
+#include <vrlis/method.hpp>
+
+#include "film.hpp"
+#include "scene.hpp"
+#include "transport.hpp"
+
+namespace vrli {
+
+struct PassStats {
+  std::uint64_t vrls = 0, gathers = 0;
+  double seconds = 0;
+};
+
+struct RenderSettings {
+  int width = 64, height = 64;
+  int vrls_per_pass = 64;  // light paths per pass
+  bool jitter = true;      // false: every sample through the pixel centre
+  TransportSettings transport;
+};
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  // Pass number `pass` of the render seeded by `seed`, with camera sampler `method`.
+  virtual Film RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) = 0;
+};
+
+// The bidirectional VRL pipeline: light pass, then camera pass.
+class VrlRenderer : public Renderer {
+ public:
+  VrlRenderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
+  Film RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
+
+ private:
+  const Scene& scene_;
+  RenderSettings settings_;
+};
+
+// The reference: a volumetric path tracer with next-event estimation (ignores `method`).
+class PathTracingRenderer : public Renderer {
+ public:
+  PathTracingRenderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
+  Film RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
+
+ private:
+  const Scene& scene_;
+  RenderSettings settings_;
+};
+
+}  // namespace vrli

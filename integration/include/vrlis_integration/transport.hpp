@@ -1,0 +1,20 @@
+#pragma once
+// Which parts of light transport a render computes (see docs/renderer.md for how the parts
+// add up to the whole without counting a path twice).
+namespace vrli {
+
+struct TransportSettings {
+  bool medium_to_medium = true;   // VRL gather along camera segments
+  bool medium_to_surface = true;  // VRL gather at the diffuse surface ending the camera chain
+  bool direct = true;             // next-event estimation at the first camera vertex
+  bool indirect = true;           // path-traced remainder (second vertex not a VRL point)
+  // Light paths that meet a specular surface before any diffuse or medium vertex (L S+ ...)
+  // may go on. Off, the VRL image holds exactly what a path tracer with next-event
+  // estimation can sample from point and collimated lights.
+  bool light_caustics = true;
+  bool first_segment_only = false;  // light paths stop after their first medium segment
+  int max_depth = 100;              // interactions per path (camera or light side)
+  int rr_depth = 3;                 // Russian roulette from this depth on
+};
+
+}  // namespace vrli

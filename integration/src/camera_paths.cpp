@@ -1,0 +1,67 @@
+#include "vrlis_integration/camera_paths.hpp"
+
+#include "vrlis_integration/direct.hpp"
+#include "vrlis_integration/gather.hpp"
+#include "vrlis_integration/path_tracer.hpp"
+
+namespace vrli {
+
+Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, vrlis::Method method,
+                     const std::vector<Vrl>& vrls, Ray ray, Rng& rng, GatherCount* count) {
+  const HomogeneousMedium& m = scene.medium;
+  const PathTracer remainder(scene, tr);
+  Spectrum L, beta(1.f);
+  for (int depth = 0; depth < tr.max_depth; ++depth) {
+    SurfaceHit hit;
+    bool found = scene.Intersect(ray, &hit);
+    Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
+    if (!iv.Empty()) {
+      CameraSegment seg{ray, iv};
+      if (tr.medium_to_medium) {
+        for (const Vrl& vrl : vrls) L += beta * GatherMediumToMedium(method, scene, seg, vrl, rng);
+        count->medium_to_medium += vrls.size();
+      }
+      if (tr.direct) L += beta * SingleScattering(method, scene, seg, rng);
+      if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
+        float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
+        if (d < iv.b) {
+          float u1 = rng.Uniform(), u2 = rng.Uniform();
+          Ray next{ray(d), SamplePhase(m.g, ray.d, u1, u2)};
+          L += beta * m.Albedo() * remainder.Li(next, rng, depth + 1, true);
+        }
+      }
+      beta *= std::exp(-m.SigmaT() * iv.Length());  // on to the surface
+    }
+    if (!found) break;
+    const Material& mat = scene.materials[static_cast<std::size_t>(hit.material)];
+    if (mat.IsSpecular()) {
+      Spectrum w;
+      Vec3f d = SampleSpecular(mat, ray.d, hit.n, rng.Uniform(), &w);
+      beta *= w;
+      ray = {hit.p, d};
+      if (depth + 1 >= tr.rr_depth) {
+        float q = std::min(0.95f, beta.MaxComponent());
+        if (!(rng.Uniform() < q)) break;
+        beta *= 1 / q;
+      }
+      continue;
+    }
+    // The first diffuse vertex ends the camera chain.
+    Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
+    if (tr.medium_to_surface && m.Present()) {
+      for (const Vrl& vrl : vrls)
+        L += beta * GatherMediumToSurface(method, scene, hit.p, nf, mat.albedo, vrl, rng);
+      count->medium_to_surface += vrls.size();
+    }
+    if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
+    if (tr.indirect) {
+      float u1 = rng.Uniform(), u2 = rng.Uniform();
+      Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
+      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, true);
+    }
+    break;
+  }
+  return L;
+}
+
+}  // namespace vrli

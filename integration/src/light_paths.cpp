@@ -1,0 +1,100 @@
+#include "vrlis_integration/light_paths.hpp"
+
+#include <tbb/parallel_for.h>
+
+namespace vrli {
+namespace {
+
+struct Emission {
+  Ray ray;
+  Spectrum flux;
+};
+
+Emission SampleEmission(const Scene& scene, int index, int count, Rng& rng) {
+  std::vector<float> powers = scene.lights.Powers();
+  float total = 0;
+  for (float p : powers) total += p;
+  // Choose a light in proportion to its power.
+  float u = rng.Uniform() * total, acc = 0;
+  std::size_t k = 0;
+  while (k + 1 < powers.size() && u >= acc + powers[k]) acc += powers[k++];
+  float pick = powers[k] / total;
+  float u1 = rng.Uniform(), u2 = rng.Uniform();
+  if (k < scene.lights.points.size()) {
+    const PointLight& l = scene.lights.points[k];
+    Vec3f d = l.fibonacci_beams ? FibonacciDirection(index, count) : SampleUniformSphere(u1, u2);
+    return {{l.position, d}, l.intensity * (4 * kPi / (pick * count))};
+  }
+  const CollimatedRect& l = scene.lights.rects[k - scene.lights.points.size()];
+  float power = l.Area() * std::abs(Dot(l.Normal(), l.direction));
+  return {{l.corner + u1 * l.edge1 + u2 * l.edge2, l.direction}, l.irradiance * (power / (pick * count))};
+}
+
+void TracePath(const Scene& scene, const TransportSettings& tr, int index, int count, Rng& rng,
+               std::vector<Vrl>* out) {
+  Emission e = SampleEmission(scene, index, count, rng);
+  Ray ray = e.ray;
+  Spectrum beta = e.flux;
+  const float start = e.flux.MaxComponent();
+  const HomogeneousMedium& m = scene.medium;
+  bool scattered = false;  // met a diffuse or medium vertex yet
+  auto survives = [&](int depth) {  // Russian roulette
+    if (depth + 1 < tr.rr_depth) return true;
+    float q = std::min(0.95f, beta.MaxComponent() / start);
+    if (!(rng.Uniform() < q)) return false;
+    beta *= 1 / q;
+    return true;
+  };
+  for (int depth = 0; depth < tr.max_depth; ++depth) {
+    SurfaceHit hit;
+    bool found = scene.Intersect(ray, &hit);
+    Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
+    if (!iv.Empty()) {
+      out->push_back({ray(iv.a), ray.d, iv.Length(), beta});
+      if (tr.first_segment_only) return;
+      // Continue the path: a free-flight distance; past the segment it reaches the surface
+      // with weight 1 (probability and transmittance cancel).
+      float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
+      if (d < iv.b) {
+        beta *= m.Albedo();
+        float u1 = rng.Uniform(), u2 = rng.Uniform();
+        ray = {ray(d), SamplePhase(m.g, ray.d, u1, u2)};
+        scattered = true;
+        if (!survives(depth)) return;
+        continue;
+      }
+    }
+    if (!found) return;
+    const Material& mat = scene.materials[static_cast<std::size_t>(hit.material)];
+    if (mat.IsSpecular()) {
+      if (!tr.light_caustics && !scattered) return;
+      Spectrum w;
+      Vec3f d = SampleSpecular(mat, ray.d, hit.n, rng.Uniform(), &w);
+      beta *= w;
+      ray = {hit.p, d};
+    } else {
+      Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
+      beta *= mat.albedo;
+      float u1 = rng.Uniform(), u2 = rng.Uniform();
+      ray = {hit.p, SampleCosineHemisphere(nf, u1, u2)};
+      scattered = true;
+    }
+    if (!survives(depth)) return;
+  }
+}
+
+}  // namespace
+
+std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
+                                 std::uint64_t seed, std::uint64_t pass) {
+  std::vector<std::vector<Vrl>> per_path(static_cast<std::size_t>(count));
+  tbb::parallel_for(0, count, [&](int i) {
+    Rng rng(seed, pass, static_cast<std::uint64_t>(i), StreamPurpose::LightPath);
+    TracePath(scene, transport, i, count, rng, &per_path[static_cast<std::size_t>(i)]);
+  });
+  std::vector<Vrl> vrls;
+  for (const auto& p : per_path) vrls.insert(vrls.end(), p.begin(), p.end());
+  return vrls;
+}
+
+}  // namespace vrli

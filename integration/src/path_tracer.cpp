@@ -1,0 +1,56 @@
+#include "vrlis_integration/path_tracer.hpp"
+
+#include "vrlis_integration/direct.hpp"
+
+namespace vrli {
+
+Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) const {
+  const HomogeneousMedium& m = scene_.medium;
+  Spectrum L, beta(1.f);
+  for (; depth < tr_.max_depth; ++depth) {
+    SurfaceHit hit;
+    bool found = scene_.Intersect(ray, &hit);
+    Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
+    bool scattered = false;
+    if (!iv.Empty()) {
+      if (skip_first_medium) {
+        beta *= std::exp(-m.SigmaT() * iv.Length());
+      } else {
+        float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
+        if (d < iv.b) {  // a medium vertex
+          beta *= m.Albedo();
+          Vec3f p = ray(d);
+          L += beta * DirectMedium(scene_, p, ray.d);
+          float u1 = rng.Uniform(), u2 = rng.Uniform();
+          ray = {p, SamplePhase(m.g, ray.d, u1, u2)};
+          scattered = true;
+        }
+      }
+    }
+    skip_first_medium = false;
+    if (!scattered) {
+      if (!found) break;  // no emitter is ever seen directly: all lights are delta lights
+      const Material& mat = scene_.materials[static_cast<std::size_t>(hit.material)];
+      if (mat.IsSpecular()) {
+        Spectrum w;
+        Vec3f d = SampleSpecular(mat, ray.d, hit.n, rng.Uniform(), &w);
+        beta *= w;
+        ray = {hit.p, d};
+      } else {
+        Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
+        L += beta * DirectSurface(scene_, hit.p, nf, mat.albedo);
+        beta *= mat.albedo;
+        float u1 = rng.Uniform(), u2 = rng.Uniform();
+        ray = {hit.p, SampleCosineHemisphere(nf, u1, u2)};
+      }
+    }
+    if (depth + 1 >= tr_.rr_depth) {
+      float q = std::min(0.95f, beta.MaxComponent());
+      if (!(rng.Uniform() < q)) break;
+      beta *= 1 / q;
+    }
+  }
+  return L;
+}
+
+}  // namespace vrli

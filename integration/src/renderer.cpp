@@ -1,0 +1,63 @@
+#include "vrlis_integration/renderer.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <chrono>
+
+#include "vrlis_integration/camera_paths.hpp"
+#include "vrlis_integration/light_paths.hpp"
+#include "vrlis_integration/path_tracer.hpp"
+
+namespace vrli {
+namespace {
+
+// Calls f(x, y, rng, ray) for every pixel, in parallel over rows; the random stream of a
+// pixel depends on (seed, pass, pixel) only.
+template <typename F>
+Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f) {
+  Film film(s.width, s.height);
+  tbb::parallel_for(tbb::blocked_range<int>(0, s.height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < s.width; ++x) {
+        Rng rng(seed, pass, static_cast<std::uint64_t>(y) * s.width + x, StreamPurpose::Camera);
+        float jx = s.jitter ? rng.Uniform() : 0.5f, jy = s.jitter ? rng.Uniform() : 0.5f;
+        Ray ray = scene.camera.Generate(x + jx, y + jy, s.width, s.height);
+        film.at(x, y) = f(ray, rng);
+      }
+  });
+  return film;
+}
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+Film VrlRenderer::RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<Vrl> vrls = scene_.medium.Present() && !scene_.lights.Powers().empty()
+                              ? TraceLightPaths(scene_, settings_.transport, settings_.vrls_per_pass, seed, pass)
+                              : std::vector<Vrl>{};
+  std::atomic<std::uint64_t> gathers{0};
+  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) {
+    GatherCount count;
+    Spectrum L = VrlRadiance(scene_, settings_.transport, method, vrls, ray, rng, &count);
+    gathers.fetch_add(count.Total(), std::memory_order_relaxed);
+    return L;
+  });
+  if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
+  return film;
+}
+
+Film PathTracingRenderer::RenderPass(vrlis::Method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
+  auto t0 = std::chrono::steady_clock::now();
+  PathTracer pt(scene_, settings_.transport);
+  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) { return pt.Li(ray, rng); });
+  if (stats) *stats = {0, 0, Since(t0)};
+  return film;
+}
+
+}  // namespace vrli
