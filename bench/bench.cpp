@@ -4,6 +4,7 @@
 //   Estimator/<Sampler>/g:<g>  the whole medium-to-medium step without visibility: VrlPoint
 //                              (fit, sample, pdf), the camera sampler (fit, sample, pdf), the
 //                              integrand, f / (p1 p2)
+//   Fit/<Sampler>/g:<g>        the fit alone (where Camera's time goes)
 //   VrlPoint                   step one alone (fit, sample, pdf); independent of g
 //
 // Every benchmark cycles in order through a pool of 1024 random queries (the pairs of the
@@ -62,6 +63,19 @@ void Camera(benchmark::State& state, double g) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// The fit alone, to see where Camera's time goes.
+template <typename Sampler>
+void Fit(benchmark::State& state, double g) {
+  const Pools& pools = PoolsFor(g);
+  size_t i = 0;
+  for (auto _ : state) {
+    Sampler s(pools.camera[i]);
+    benchmark::DoNotOptimize(s);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 template <typename Sampler>
 void Estimator(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
@@ -108,6 +122,8 @@ void RegisterSampler(const char* name) {
   for (double g : kStudyG) {
     benchmark::RegisterBenchmark((std::string("Camera/") + name + "/" + GName(g)).c_str(),
                                  [g](benchmark::State& s) { Camera<Sampler>(s, g); });
+    benchmark::RegisterBenchmark((std::string("Fit/") + name + "/" + GName(g)).c_str(),
+                                 [g](benchmark::State& s) { Fit<Sampler>(s, g); });
     benchmark::RegisterBenchmark((std::string("Estimator/") + name + "/" + GName(g)).c_str(),
                                  [g](benchmark::State& s) { Estimator<Sampler>(s, g); });
   }
@@ -121,6 +137,11 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("vrlis_pool", std::to_string(kPool));
   benchmark::AddCustomContext("vrlis_seed", std::to_string(kDefaultSeed));
   benchmark::AddCustomContext("vrlis_real", "float");
+#if defined(__OPTIMIZE__) && defined(NDEBUG)
+  benchmark::AddCustomContext("vrlis_build", "optimised, NDEBUG");
+#else
+  benchmark::AddCustomContext("vrlis_build", "NOT OPTIMISED: timings are meaningless");
+#endif
   benchmark::RegisterBenchmark("VrlPoint", VrlPointStep);
   RegisterSampler<Equiangular<float>>(kCameraSamplerNames[0]);
   RegisterSampler<Novak<float>>(kCameraSamplerNames[1]);

@@ -25,14 +25,13 @@ struct McMoments {
 // X = f / p for n seeded samples of `draw`, which returns {f, p}.
 McMoments RunMc(std::uint64_t seed, int n, const std::function<std::pair<double, double>(Rng&)>& draw) {
   Rng rng(seed);
-  double s1 = 0, s2 = 0, s3 = 0, s4 = 0;
+  double s1 = 0, s2 = 0, s4 = 0;
   for (int i = 0; i < n; ++i) {
     auto [f, p] = draw(rng);
     double x = p > 0 ? f / p : 0;
     double x2 = x * x;
     s1 += x;
     s2 += x2;
-    s3 += x2 * x;
     s4 += x2 * x2;
   }
   McMoments m;

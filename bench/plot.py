@@ -1,0 +1,212 @@
+#!/usr/bin/env python3
+"""Charts and a Markdown table from one vrlis_bench run and one vrlis_accuracy run.
+
+    /usr/bin/python3 bench/plot.py --bench bench.json --accuracy accuracy.json --out DIR \
+        [--machine TEXT] [--command TEXT] [--date TEXT]
+
+Writes DIR/table.md, DIR/speed_accuracy.{png,svg} and DIR/efficiency.{png,svg}.
+
+Time per sample is the median CPU time over the benchmark's repetitions (CPU time, not
+wall time: the machine may be shared). All ratios come from the one benchmark run given.
+Efficiency is 1 / (relative variance x time per sample), with the mean relative variance
+over the study's pairs (what the error of a whole image sees; the median is in the table).
+"""
+import argparse
+import datetime
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+SAMPLERS = ["Equiangular", "Novak", "CauchySum", "CauchyMixture"]
+COLORS = {"Equiangular": "#7f7f7f", "Novak": "#1f77b4", "CauchySum": "#d62728", "CauchyMixture": "#2ca02c"}
+MARKERS = {"Equiangular": "s", "Novak": "o", "CauchySum": "^", "CauchyMixture": "v"}
+STEPS = [("camera", "Camera", "camera step (fixed VRL point)"),
+         ("whole", "Estimator", "whole estimator (VRL point + camera point)")]
+UNIT = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+
+
+def load_bench(path):
+    """{run_name: median cpu time in ns} and the run's context."""
+    with open(path) as f:
+        data = json.load(f)
+    times, singles = {}, {}
+    for b in data["benchmarks"]:
+        name = b.get("run_name", b["name"])
+        t = b["cpu_time"] * UNIT[b.get("time_unit", "ns")]
+        if b.get("run_type") == "aggregate":
+            if b.get("aggregate_name") == "median":
+                times[name] = t
+        else:
+            singles.setdefault(name, []).append(t)
+    for name, ts in singles.items():  # runs without repetitions
+        if name not in times:
+            ts = sorted(ts)
+            times[name] = ts[len(ts) // 2]
+    return times, data.get("context", {})
+
+
+def gkey(g):
+    return f"g:{g:.2f}"
+
+
+def fmt(x, digits=3):
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "-"
+    return f"{x:.{digits}g}"
+
+
+def geomean(xs):
+    xs = [x for x in xs if x and x > 0]
+    return math.exp(sum(math.log(x) for x in xs) / len(xs)) if xs else float("nan")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bench", required=True)
+    ap.add_argument("--accuracy", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--machine", default="")
+    ap.add_argument("--command", default="")
+    ap.add_argument("--date", default=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"))
+    args = ap.parse_args()
+
+    times, context = load_bench(args.bench)
+    with open(args.accuracy) as f:
+        acc = json.load(f)
+    gs = [r["g"] for r in acc["results"]]
+    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS} for step, _, _ in STEPS}
+
+    def time(prefix, s, g):
+        return times.get(f"{prefix}/{s}/{gkey(g)}")
+
+    eff = {}
+    for step, prefix, _ in STEPS:
+        for g in gs:
+            for s in SAMPLERS:
+                t, rv = time(prefix, s, g), relvar[step][(g, s)]
+                eff[(step, g, s)] = 1e9 / (rv["mean"] * t) if t and rv["mean"] > 0 else float("nan")
+                eff[(step, g, s, "median")] = 1e9 / (rv["median"] * t) if t and rv["median"] > 0 else float("nan")
+
+    os.makedirs(args.out, exist_ok=True)
+    L = []
+    L.append("# vrlis: speed and accuracy of the camera samplers\n")
+    L.append(f"- Date: {args.date}")
+    if args.machine:
+        L.append(f"- Machine: {args.machine}")
+    if args.command:
+        L.append(f"- Command: `{args.command}`")
+    L.append(f"- Speed: `vrlis_bench`, float, one sample = fit + sample + pdf over a pool of "
+             f"{context.get('vrlis_pool', '1024')} random queries cycled in order; median CPU time of the repetitions "
+             f"of one run (vrlis build: {context.get('vrlis_build', '?')}).")
+    L.append(f"- Accuracy: `vrlis_accuracy`, relative variance `Int f^2/p / (Int f)^2 - 1` by quadrature (double), "
+             f"{acc['pairs']} seeded pairs per g (seed {acc['seed']}), {acc['medium']}.")
+    L.append("- Efficiency: `1 / (mean relative variance x time per sample)`, in 1/s; "
+             "the margin is the winner's efficiency over the runner-up's.\n")
+
+    # Speed.
+    L.append("## Time per sample (ns) and ratios to Novák\n")
+    L.append("| g | Equiangular | Novak | CauchySum | CauchyMixture | CauchySum / Novak | CauchyMixture / Novak "
+             "| estimator: Equi. | Novak | CSum | CMix | CSum / Novak | CMix / Novak |")
+    L.append("|---" * 13 + "|")
+    ratios = {k: [] for k in ["cs", "cm", "ecs", "ecm"]}
+    for g in gs:
+        c = [time("Camera", s, g) for s in SAMPLERS]
+        e = [time("Estimator", s, g) for s in SAMPLERS]
+        rcs, rcm = c[2] / c[1], c[3] / c[1]
+        ecs, ecm = e[2] / e[1], e[3] / e[1]
+        for k, v in zip(ratios, [rcs, rcm, ecs, ecm]):
+            ratios[k].append(v)
+        L.append(f"| {g:g} | " + " | ".join(fmt(x) for x in c) + f" | **{rcs:.2f}** | **{rcm:.2f}** | "
+                 + " | ".join(fmt(x) for x in e) + f" | {ecs:.2f} | {ecm:.2f} |")
+    vp = times.get("VrlPoint")
+    L.append("")
+    L.append(f"Geometric mean over g of the camera-step ratio: CauchySum / Novak = **{geomean(ratios['cs']):.2f}**, "
+             f"CauchyMixture / Novak = **{geomean(ratios['cm']):.2f}** (goal: below 0.35). "
+             f"Whole estimator step: {geomean(ratios['ecs']):.2f} and {geomean(ratios['ecm']):.2f}."
+             + (f" VrlPoint alone: {vp:.0f} ns." if vp else ""))
+    holds = [g for g, a, b in zip(gs, ratios["cs"], ratios["cm"]) if a < 1 and b < 1]
+    below = [g for g, a, b in zip(gs, ratios["cs"], ratios["cm"]) if a < 0.35 and b < 0.35]
+    L.append(f"The seed's claim (both Cauchy samplers faster per sample than Novák) holds at g in "
+             f"{{{', '.join(f'{g:g}' for g in holds) or 'none'}}}; the 0.35 goal is met at g in "
+             f"{{{', '.join(f'{g:g}' for g in below) or 'none'}}}.")
+    fits = [(s, [times.get(f"Fit/{s}/{gkey(g)}") for g in gs]) for s in SAMPLERS]
+    if all(all(t for t in ts) for _, ts in fits):
+        L.append("Of the camera-step time, the fit alone takes (geometric mean over g): "
+                 + ", ".join(f"{s} {geomean(ts):.0f} ns" for s, ts in fits) + ".")
+    L.append("")
+
+    # Accuracy and efficiency.
+    for step, prefix, title in STEPS:
+        L.append(f"## {title[0].upper() + title[1:]}: relative variance and efficiency\n")
+        L.append("| g | " + " | ".join(f"{s} median / mean" for s in SAMPLERS) + " | "
+                 + " | ".join(f"{s} eff." for s in SAMPLERS) + " | most efficient (margin) | by median |")
+        L.append("|---" * (2 * len(SAMPLERS) + 3) + "|")
+        for g in gs:
+            rv = [relvar[step][(g, s)] for s in SAMPLERS]
+            ef = [eff[(step, g, s)] for s in SAMPLERS]
+            efm = [eff[(step, g, s, "median")] for s in SAMPLERS]
+            order = sorted(range(len(SAMPLERS)), key=lambda k: -ef[k])
+            orderm = sorted(range(len(SAMPLERS)), key=lambda k: -efm[k])
+            win = f"**{SAMPLERS[order[0]]}** (x{ef[order[0]] / ef[order[1]]:.2f} over {SAMPLERS[order[1]]})"
+            winm = f"{SAMPLERS[orderm[0]]} (x{efm[orderm[0]] / efm[orderm[1]]:.2f})"
+            L.append(f"| {g:g} | " + " | ".join(f"{fmt(r['median'])} / {fmt(r['mean'])}" for r in rv) + " | "
+                     + " | ".join(f"{x:.3g}" for x in ef) + f" | {win} | {winm} |")
+        L.append("")
+    L.append("At g = 0 every sampler draws the same (equiangular) distribution, so the winner there is the "
+             "cheapest one; the margins at g = 0 are pure cost.")
+    L.append("")
+    L.append("![speed against accuracy](figures/speed_accuracy.png)\n")
+    L.append("![efficiency against g](figures/efficiency.png)\n")
+    table = "\n".join(L) + "\n"
+    with open(os.path.join(args.out, "table.md"), "w") as f:
+        f.write(table)
+
+    # Chart 1: time per sample against relative variance.
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
+    for ax, (step, prefix, title) in zip(axes, STEPS):
+        for s in SAMPLERS:
+            xs = [time(prefix, s, g) for g in gs]
+            ys = [relvar[step][(g, s)]["mean"] for g in gs]
+            ax.scatter(xs, ys, color=COLORS[s], marker=MARKERS[s], label=s, s=36, alpha=0.85)
+            for x, y, g in zip(xs, ys, gs):
+                ax.annotate(f"{g:g}", (x, y), textcoords="offset points", xytext=(4, 2), fontsize=6,
+                            color=COLORS[s])
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("time per sample (ns, float)")
+        ax.set_ylabel("mean relative variance")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Speed against accuracy (labels: g); lower left is better")
+    fig.tight_layout()
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(args.out, f"speed_accuracy.{ext}"), dpi=130)
+    plt.close(fig)
+
+    # Chart 2: efficiency against g.
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
+    for ax, (step, prefix, title) in zip(axes, STEPS):
+        for s in SAMPLERS:
+            ax.plot(gs, [eff[(step, g, s)] for g in gs], color=COLORS[s], marker=MARKERS[s], label=s)
+        ax.set_yscale("log")
+        ax.set_xlabel("Henyey-Greenstein g")
+        ax.set_ylabel("efficiency 1 / (relative variance x time)  [1/s]")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Efficiency (higher is better)")
+    fig.tight_layout()
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(args.out, f"efficiency.{ext}"), dpi=130)
+    plt.close(fig)
+    print(table)
+
+
+if __name__ == "__main__":
+    main()
