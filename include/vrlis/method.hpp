@@ -8,14 +8,15 @@
 #include "samplers/cauchy_mixture.hpp"
 #include "samplers/cauchy_sum.hpp"
 #include "samplers/equiangular.hpp"
+#include "samplers/full_product.hpp"
 #include "samplers/novak.hpp"
 
 namespace vrlis {
 
-enum class Method { Equiangular, Novak, CauchySum, CauchyMixture };
+enum class Method { Equiangular, Novak, CauchySum, CauchyMixture, FullProduct };
 
-inline constexpr std::array<Method, 4> kMethods = {Method::Equiangular, Method::Novak, Method::CauchySum,
-                                                   Method::CauchyMixture};
+inline constexpr std::array<Method, 5> kMethods = {Method::Equiangular, Method::Novak, Method::CauchySum,
+                                                   Method::CauchyMixture, Method::FullProduct};
 
 inline constexpr std::string_view Name(Method m) {
   switch (m) {
@@ -23,6 +24,7 @@ inline constexpr std::string_view Name(Method m) {
     case Method::Novak: return "novak";
     case Method::CauchySum: return "cauchy-sum";
     case Method::CauchyMixture: return "cauchy-mixture";
+    case Method::FullProduct: return "full-product";
   }
   return "unknown";
 }
@@ -39,6 +41,7 @@ decltype(auto) WithSampler(Method m, const SegmentQuery<Real>& q, F&& f) {
     case Method::Novak: return f(Novak<Real>(q));
     case Method::CauchySum: return f(CauchySum<Real>(q));
     case Method::CauchyMixture: return f(CauchyMixture<Real>(q));
+    case Method::FullProduct: return f(FullProduct<Real>(q));
     case Method::Equiangular: break;
   }
   return f(Equiangular<Real>(q));

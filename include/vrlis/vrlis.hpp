@@ -4,11 +4,13 @@
 #include "core/query.hpp"
 #include "angle/angle_domain.hpp"
 #include "angle/phase_product.hpp"
+#include "angle/full_product.hpp"
 #include "angle/segment_sampler.hpp"
 #include "samplers/equiangular.hpp"
 #include "samplers/novak.hpp"
 #include "samplers/cauchy_sum.hpp"
 #include "samplers/cauchy_mixture.hpp"
+#include "samplers/full_product.hpp"
 #include "samplers/vrl_point.hpp"
 #include "method.hpp"
 
@@ -17,4 +19,5 @@ static_assert(IsSegmentSampler<Equiangular<float>>::value && IsSegmentSampler<Eq
 static_assert(IsSegmentSampler<Novak<float>>::value && IsSegmentSampler<Novak<double>>::value);
 static_assert(IsSegmentSampler<CauchySum<float>>::value && IsSegmentSampler<CauchySum<double>>::value);
 static_assert(IsSegmentSampler<CauchyMixture<float>>::value && IsSegmentSampler<CauchyMixture<double>>::value);
+static_assert(IsSegmentSampler<FullProduct<float>>::value && IsSegmentSampler<FullProduct<double>>::value);
 }  // namespace vrlis

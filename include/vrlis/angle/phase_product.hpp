@@ -12,6 +12,8 @@ namespace vrlis {
 template <typename Real>
 class PhaseProduct {
  public:
+  static constexpr Real kRelativeFloor = 0;  // HG lobes are positive everywhere: fit them as they are
+
   PhaseProduct(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
       : g_(q.g), g_point_(q.lobe.g), kind_(q.lobe.kind), width_(dom.width()) {
     // Offsets of theta = -pi/2 and +pi/2; pick the formula whose atan2 is small.
@@ -37,8 +39,12 @@ class PhaseProduct {
   // HenyeyGreenstein(g, -sin theta) with scattering angle x = theta + pi/2 = delta - lower:
   // 1 - cos = 2 sin^2(x/2) and 1 + cos = 2 cos^2(x/2), both exact near their zero.
   Real segment_lobe(Real delta) const {
-    Real half = (delta - lower_) / 2;
-    return HenyeyGreenstein(g_, 2 * Sqr(std::sin(half)), 2 * Sqr(std::cos(half)));
+    Real half = segment_half_angle(delta);
+    return segment_lobe(std::sin(half), std::cos(half));
+  }
+  Real segment_half_angle(Real delta) const { return (delta - lower_) / 2; }
+  Real segment_lobe(Real sin_half, Real cos_half) const {
+    return HenyeyGreenstein(g_, 2 * Sqr(sin_half), 2 * Sqr(cos_half));
   }
 
   Real point_lobe(Real delta) const {

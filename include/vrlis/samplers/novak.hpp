@@ -5,8 +5,10 @@
 // If the point lobe's peak lies inside the interval the nodes are split there, and on each
 // side they follow a cosine-warped spacing, dense near both ends of the side. An interval
 // is chosen by its trapezoid area, then the linear density inside it is inverted.
+#include <algorithm>
 #include <array>
 
+#include "../angle/full_product.hpp"
 #include "../angle/segment_sampler.hpp"
 
 namespace vrlis {
@@ -19,14 +21,17 @@ Real SampleLinear(Real v, Real f0, Real f1) {
   return denom > 0 ? Clamp(v * (f0 + f1) / denom, Real(0), Real(1)) : v;
 }
 
-template <typename R, int kNodes = 10>
+// A piecewise-linear fit of a target over the angle domain. Target is constructed from
+// (query, domain) and offers operator()(delta), point_lobe_flat(), point_peak() and
+// kRelativeFloor (node values are raised to that fraction of the largest one).
+template <typename R, int kNodes = 10, typename Target = PhaseProduct<R>>
 class PiecewiseLinearAngle {
   static_assert(kNodes >= 3, "Novak's split needs at least one interval on each side");
 
  public:
   using Real = R;
   PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
-    PhaseProduct<Real> target(q, dom);
+    Target target(q, dom);
     Real width = dom.width(), peak = target.point_peak();
     if (!target.point_lobe_flat() && peak > 0 && peak < width) {
       int split = static_cast<int>(std::lround(peak / width * (kNodes - 1)));
@@ -37,6 +42,10 @@ class PiecewiseLinearAngle {
       PlaceWarped(0, Real(0), width, kNodes - 1);
     }
     for (int j = 0; j < kNodes; ++j) value_[j] = target(node_[j]);
+    if constexpr (Target::kRelativeFloor > 0) {
+      Real floor = Target::kRelativeFloor * *std::max_element(value_.begin(), value_.end());
+      for (Real& v : value_) v = std::max(v, floor);
+    }
     Accumulate();
     if (!(cdf_[kNodes - 1] > 0) || !std::isfinite(cdf_[kNodes - 1])) {  // a target zero at every node
       value_.fill(1);
@@ -109,7 +118,8 @@ class PiecewiseLinearAngle {
   std::array<Real, kNodes> node_, value_, cdf_;
 };
 
+// Novák et al.: the phase product, 10 nodes as in the public implementation.
 template <typename Real = float, int kNodes = 10>
-using Novak = SegmentSampler<PiecewiseLinearAngle<Real, kNodes>>;
+using Novak = SegmentSampler<PiecewiseLinearAngle<Real, kNodes, PhaseProduct<Real>>>;
 
 }  // namespace vrlis
