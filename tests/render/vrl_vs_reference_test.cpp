@@ -1,0 +1,66 @@
+// The VRL renderer against the reference path tracer, scene by scene, at low resolution:
+// per-block means over independent passes, z-scores, Bonferroni-corrected. A negative
+// control (the VRL image scaled by 1.15) must be rejected, so the test has power.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+
+#include "block_stats.hpp"
+#include "scenes.hpp"
+
+namespace {
+
+struct Case {
+  const char* scene;
+  vrlis::Method method;
+  int size, block;  // image and block size in pixels
+  int vrl_passes, vrls, pt_passes;
+  double control;  // a radiometric error the test must detect at this budget
+};
+
+void Run(const Case& c) {
+  auto built = vrl_render::BuildScene(c.scene, {});
+  REQUIRE(built);
+  vrli::RenderSettings s;
+  s.width = s.height = c.size;
+  s.vrls_per_pass = c.vrls;
+  s.transport = built->transport;
+  s.transport.light_caustics = false;  // the path tracer cannot sample L S+ paths from point lights
+  const int block = c.block;
+  vrli::VrlRenderer vrl(built->scene, s);
+  vrli::PathTracingRenderer pt(built->scene, s);
+  auto a = render_test::EstimateBlocks(vrl, c.method, s.width, s.height, block, c.vrl_passes, 11);
+  auto b = render_test::EstimateBlocks(pt, c.method, s.width, s.height, block, c.pt_passes, 12);
+  render_test::ZSummary z = render_test::Compare(a, b);
+  double ra = 0, rb = 0;
+  for (std::size_t k = 0; k < a.mean.size(); ++k) {
+    ra += a.stderr_[k] / a.mean[k] / a.mean.size();
+    rb += b.stderr_[k] / b.mean[k] / b.mean.size();
+  }
+  std::printf("[render] %s: mean relative standard error VRL %.3f, path tracer %.3f\n", c.scene, ra, rb);
+  std::printf("[render] %s, %s vs path tracer: %s\n", c.scene, std::string(vrlis::Name(c.method)).c_str(),
+              z.Describe().c_str());
+  CHECK(z.n == (c.size / c.block) * (c.size / c.block));
+  CHECK(z.Pass());
+  // Negative control: a radiometric error of c.control must be detected.
+  auto scaled = a;
+  for (double& m : scaled.mean) m *= c.control;
+  for (double& e : scaled.stderr_) e *= c.control;
+  render_test::ZSummary zc = render_test::Compare(scaled, b);
+  std::printf("[render] %s, control x%.2f: %s\n", c.scene, c.control, zc.Describe().c_str());
+  CHECK_FALSE(zc.Pass());
+}
+
+}  // namespace
+
+TEST_CASE("room: VRL image matches the path tracer", "[render][reference]") {
+  Run({"room", vrlis::Method::Novak, 32, 16, 480, 4, 2048, 1.25});
+}
+
+TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
+  Run({"cube", vrlis::Method::CauchySum, 32, 8, 48, 32, 256, 1.1});
+}
+
+TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
+  Run({"corner", vrlis::Method::CauchyMixture, 32, 32, 200, 16, 2048, 1.5});
+}
