@@ -62,5 +62,5 @@ TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
 }
 
 TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
-  Run({"corner", vrlis::Method::CauchyMixture, 32, 32, 200, 16, 2048, 1.5});
+  Run({"corner", vrlis::Method::CauchyMixture, 16, 16, 200, 64, 4096, 1.5});
 }
