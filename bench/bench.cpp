@@ -147,6 +147,8 @@ int main(int argc, char** argv) {
   RegisterSampler<Novak<float>>(kCameraSamplerNames[1]);
   RegisterSampler<CauchySum<float>>(kCameraSamplerNames[2]);
   RegisterSampler<CauchyMixture<float>>(kCameraSamplerNames[3]);
+  RegisterSampler<FullProduct<float>>(kCameraSamplerNames[4]);
+  static_assert(kCameraSamplerCount == 5, "register every camera sampler");
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -31,11 +31,13 @@ Real IntegrandAt(const Pair<Real>& p, Real u, Vec3<Real> y, Real v) {
 template <typename Real>
 Real Integrand(const Pair<Real>& p, Real u, Real v) { return IntegrandAt(p, u, VrlPointAt(p, v), v); }
 
-// The camera samplers, in the order every study reports them.
+// The camera samplers, in the order every study reports them. FullProduct is vrlis's own
+// (Novák's construction over phases x transmittance, 16 nodes); the others are published.
 template <typename Real>
-using CameraSamplers = std::tuple<Equiangular<Real>, Novak<Real>, CauchySum<Real>, CauchyMixture<Real>>;
-inline constexpr int kCameraSamplerCount = 4;
+using CameraSamplers =
+    std::tuple<Equiangular<Real>, Novak<Real>, CauchySum<Real>, CauchyMixture<Real>, FullProduct<Real>>;
+inline constexpr int kCameraSamplerCount = int(std::tuple_size_v<CameraSamplers<float>>);
 inline constexpr const char* kCameraSamplerNames[kCameraSamplerCount] = {"Equiangular", "Novak", "CauchySum",
-                                                                          "CauchyMixture"};
+                                                                          "CauchyMixture", "FullProduct"};
 
 }  // namespace vrlis::study

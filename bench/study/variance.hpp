@@ -20,6 +20,7 @@
 // in float elsewhere).
 #include <algorithm>
 #include <array>
+#include <tuple>
 #include <vector>
 
 #include "integrand.hpp"
@@ -44,12 +45,19 @@ struct Moments {
   double RelativeVariance(int k) const { return second[k] / (first * first) - 1; }
 };
 
-// The breakpoints of the camera-step quadrature for one query, in delta.
+// Every sampler of the tuple type fitted to one query.
+template <typename... S>
+std::tuple<S...> FitAll(const SegmentQuery<double>& q, std::tuple<S...>*) { return std::tuple<S...>(S(q)...); }
+
+// The breakpoints of the camera-step quadrature for one query, in delta: the nodes of the
+// piecewise-linear samplers (kinks of their densities), both lobes' peaks and a few multiples
+// of the lobes' and the seed's Cauchy widths around them.
 inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const AngleDomain<double>& dom,
-                                        const Novak<double>& novak) {
+                                        const CameraSamplers<double>& samplers) {
   double width = dom.width();
   std::vector<double> breaks = {0, width};
-  for (double node : novak.distribution().nodes()) breaks.push_back(node);
+  for (double node : std::get<Novak<double>>(samplers).distribution().nodes()) breaks.push_back(node);
+  for (double node : std::get<FullProduct<double>>(samplers).distribution().nodes()) breaks.push_back(node);
   PhaseProduct<double> target(q, dom);
   double a = std::abs(q.g);
   double cauchy = 4 * (1 - a) * (1 - a) / (1 + a);  // the seed's Cauchy scale at the segment lobe's peak
@@ -68,12 +76,11 @@ inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const Ang
 
 // Camera step for the VRL point y = y(v): Int f du and Int f^2 / p du for every sampler.
 inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSettings& s = {}) {
+  constexpr int K = kCameraSamplerCount;
   Vec3<double> y = VrlPointAt(p, v);
   SegmentQuery<double> q = CameraQuery(p, y);
-  Equiangular<double> eq(q);
-  Novak<double> nv(q);
-  CauchySum<double> cs(q);
-  CauchyMixture<double> cm(q);
+  CameraSamplers<double> samplers = FitAll(q, static_cast<CameraSamplers<double>*>(nullptr));
+  const auto& eq = std::get<0>(samplers);
   const AngleDomain<double>& dom = eq.domain();
   Moments m;
   if (!eq.valid() || !(dom.width() > 0)) return m;
@@ -81,13 +88,17 @@ inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSe
     double u = dom.t_at(delta);
     double fj = IntegrandAt(p, u, y, v) / dom.dtheta_dt(u);
     double f2 = fj * fj;
-    return std::array<double, 5>{fj, f2 / eq.distribution().pdf(delta), f2 / nv.distribution().pdf(delta),
-                                 f2 / cs.distribution().pdf(delta), f2 / cm.distribution().pdf(delta)};
+    std::array<double, K + 1> out{fj};
+    std::apply([&](const auto&... sampler) {
+      int k = 1;
+      ((out[k++] = f2 / sampler.distribution().pdf(delta)), ...);
+    }, samplers);
+    return out;
   };
-  auto r = Integrate<5>(integrand, CameraBreaks(q, dom, nv), s.inner_tol, s.inner_max);
+  auto r = Integrate<K + 1>(integrand, CameraBreaks(q, dom, samplers), s.inner_tol, s.inner_max);
   m.first = r.value[0];
-  for (int k = 0; k < kCameraSamplerCount; ++k) m.second[k] = r.value[k + 1];
-  for (int n = 0; n < 5; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
+  for (int k = 0; k < K; ++k) m.second[k] = r.value[k + 1];
+  for (int n = 0; n <= K; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
   m.evaluations = r.evaluations;
   m.converged = r.converged;
   return m;
@@ -112,7 +123,7 @@ inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s =
     inner_evaluations += c.evaluations;
     inner_converged = inner_converged && c.converged;
     inner_error = std::max(inner_error, c.rel_error);
-    std::array<double, 5> out{c.first / p1};
+    std::array<double, kCameraSamplerCount + 1> out{c.first / p1};
     for (int k = 0; k < kCameraSamplerCount; ++k) out[k + 1] = c.second[k] / (p1 * p1);
     return out;
   };
@@ -127,10 +138,10 @@ inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s =
     double v0 = (Dot(d, p.wl) - Dot(d, p.wc) * Dot(p.wl, p.wc)) / sin2;
     if (v0 > 0 && v0 < p.t) breaks.push_back(vp.invert(v0));
   }
-  auto r = Integrate<5>(integrand, breaks, s.outer_tol, s.outer_max);
+  auto r = Integrate<kCameraSamplerCount + 1>(integrand, breaks, s.outer_tol, s.outer_max);
   m.first = r.value[0];
   for (int k = 0; k < kCameraSamplerCount; ++k) m.second[k] = r.value[k + 1];
-  for (int n = 0; n < 5; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
+  for (int n = 0; n <= kCameraSamplerCount; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
   m.rel_error = std::max(m.rel_error, inner_error);
   m.evaluations = inner_evaluations;
   m.converged = r.converged && inner_converged;
