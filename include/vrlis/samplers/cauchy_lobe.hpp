@@ -3,9 +3,10 @@
 // to each phase lobe. Shared by the Cauchy sum and the Cauchy mixture.
 //
 // With x = (theta - mu) / gamma, the primitive atan(x) - atan(x_a) is the argument of
-// (1 + i x)(1 - i x_a), i.e. of z(delta) = (alpha + beta delta) + i delta once scaled by
-// gamma. Working with z keeps the truncated mass exact for tiny gamma and peaks near an end.
+// (1 + i x)(1 - i x_a), i.e. of z(delta) = gamma (1 + x x_a) + i delta once scaled by gamma.
+// Working with z keeps the truncated mass exact for tiny gamma and peaks near an end.
 #include <array>
+#include <limits>
 
 #include "../angle/phase_product.hpp"
 
@@ -17,29 +18,26 @@ class TruncatedCauchy {
   TruncatedCauchy() = default;
   // location: offset of the peak from theta_a (may lie outside the interval).
   TruncatedCauchy(Real location, Real scale, Real width)
-      : location_(location),
-        scale_(scale),
-        alpha_(scale + location * location / scale),
-        beta_(-location / scale),
-        mass_(Atan2(width, alpha_ + beta_ * width)),
-        width_(width) {}
+      : location_(location), scale_(scale), width_(width), mass_(primitive(width)) {}
 
   // gamma / ((delta - mu)^2 + gamma^2): pi times the Cauchy density; integrates to mass().
   Real density(Real delta) const { return scale_ / (Sqr(delta - location_) + Sqr(scale_)); }
-  // Its integral over [0, delta].
-  Real primitive(Real delta) const { return Atan2(delta, alpha_ + beta_ * delta); }
-  // The delta whose primitive is s, for s in [0, mass()].
+  // Its integral over [0, delta]: arg z(delta), z = Re(delta) + i delta.
+  Real primitive(Real delta) const { return Atan2(delta, Re(delta)); }
+  // The delta whose primitive is s, for s in [0, mass()]: delta cos s = Re(delta) sin s.
   Real inverse_primitive(Real s) const {
-    Real sn = std::sin(s), denom = std::cos(s) - beta_ * sn;
-    return denom > 0 ? Clamp(alpha_ * sn / denom, Real(0), width_) : width_;
+    Real sn = std::sin(s), denom = std::cos(s) + location_ / scale_ * sn;
+    return denom > 0 ? Clamp(Re(0) * sn / denom, Real(0), width_) : width_;
   }
   Real mass() const { return mass_; }
   Real location() const { return location_; }
-  Real alpha() const { return alpha_; }
-  Real beta() const { return beta_; }
+  Real scale() const { return scale_; }
+  // Re z(delta) = gamma + mu (mu - delta) / gamma, in this factored form: expanded, its
+  // two terms are ~1/gamma and cancel next to the peak (every digit for |g| -> 1).
+  Real Re(Real delta) const { return scale_ + location_ * ((location_ - delta) / scale_); }
 
  private:
-  Real location_ = 0, scale_ = 1, alpha_ = 1, beta_ = 0, mass_ = 0, width_ = 0;
+  Real location_ = 0, scale_ = 1, width_ = 0, mass_ = 0;
 };
 
 // The seed's fit: a Cauchy located at the lobe's peak whose peak value 1 / (pi gamma)
@@ -58,7 +56,10 @@ struct CauchyLobes {
 
  private:
   void Add(Real peak, Real peak_value, Real width, bool segment) {
-    lobe[count] = TruncatedCauchy<Real>(peak, 1 / (kPi<Real> * peak_value), width);
+    // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
+    // (the seed's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
+    Real resolvable = 64 * std::numeric_limits<Real>::epsilon() * (width + std::abs(peak));
+    lobe[count] = TruncatedCauchy<Real>(peak, std::max(1 / (kPi<Real> * peak_value), resolvable), width);
     from_segment[count++] = segment;
   }
 };

@@ -1,8 +1,8 @@
 #pragma once
 // The seed's solution 1: p(theta) proportional to C1(theta) + C2(theta), normalised jointly.
 //
-// The CDF is a sum of two arctangents, i.e. the argument of z1(delta) z2(delta) with
-// z_k = (alpha_k + beta_k delta) + i delta. Setting that argument to S = u (mass1 + mass2)
+// The CDF is a sum of two arctangents, i.e. the argument of z1(delta) z2(delta) (see
+// cauchy_lobe.hpp). Setting that argument to S = u (mass1 + mass2)
 // gives Im(z1 z2 e^{-iS}) = 0, a quadratic in delta. Of its two roots the wanted one is
 // where the argument crosses S increasing, i.e. where the quadratic's slope is +sqrt(disc).
 #include "../angle/segment_sampler.hpp"
@@ -42,12 +42,17 @@ class CauchySumAngle {
   }
 
  private:
+  // With w_k = gamma_k z_k = (P_k - mu_k delta) + i gamma_k delta, P_k = gamma_k^2 + mu_k^2
+  // (scaling by gamma_k > 0 keeps the argument), Im(w1 w2 e^{-iS}) = a delta^2 + b delta + c
+  // has coefficients of order one even when gamma_k is tiny.
   Real SampleQuadratic(Real s) const {
     const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
+    Real m1 = c1.location(), m2 = c2.location(), g1 = c1.scale(), g2 = c2.scale();
+    Real p1 = g1 * c1.Re(0), p2 = g2 * c2.Re(0);
     Real sn = std::sin(s), cs = std::cos(s);
-    Real a = (c1.beta() + c2.beta()) * cs - (c1.beta() * c2.beta() - 1) * sn;
-    Real b = (c1.alpha() + c2.alpha()) * cs - (c1.alpha() * c2.beta() + c2.alpha() * c1.beta()) * sn;
-    Real c = -c1.alpha() * c2.alpha() * sn;
+    Real a = -(g1 * m2 + g2 * m1) * cs - (m1 * m2 - g1 * g2) * sn;
+    Real b = (g1 * p2 + g2 * p1) * cs + (p1 * m2 + p2 * m1) * sn;
+    Real c = -p1 * p2 * sn;
     Real root = SafeSqrt(b * b - 4 * a * c);
     // (-b + root) / (2a), in whichever form does not cancel.
     Real delta = b > 0 ? -2 * c / (b + root) : (-b + root) / (2 * a);
