@@ -1,0 +1,166 @@
+#pragma once
+// The samplers' contract (angle/segment_sampler.hpp, samplers/vrl_point.hpp) as checks that
+// return a description of the first violation, or an empty string. Shared by the Catch2
+// suite and the fuzz target (standard library only).
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "integrand.hpp"
+
+namespace vrlis_stab {
+
+// The stated round-trip tolerance: a sample is rounded to a Real t, so invert(sample(u))
+// can differ from u by the CDF's change over a few units in the last place of t, plus a
+// few hundred epsilons of arithmetic:
+//   |invert(sample(u)) - u| <= 256 eps + 4 pdf(t) ulp(t).
+template <typename Real>
+double RoundTripTolerance(Real t, Real pdf) {
+  Real eps = std::numeric_limits<Real>::epsilon();
+  Real ulp = std::nextafter(std::abs(t), std::numeric_limits<Real>::infinity()) - std::abs(t);
+  return 256 * double(eps) + 4 * double(pdf) * double(ulp);
+}
+
+struct Violation {
+  std::ostringstream os;
+  bool any = false;
+  template <typename T>
+  Violation& operator<<(const T& x) {
+    any = true;
+    os << x;
+    return *this;
+  }
+  std::string str() const { return os.str(); }
+};
+
+// Checks one sampler on one query at the given u values. check_round_trip: the pointwise
+// round trip (not for CauchyMixture, whose sample() picks a component first).
+template <typename Sampler>
+std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<typename Sampler::Real>& q,
+                                const double* us, int n, bool check_round_trip) {
+  using Real = typename Sampler::Real;
+  Violation v;
+  v.os.precision(9);
+  vrlis::QueryError err = vrlis::Validate(q);
+  if (s.valid() != (err == vrlis::QueryError::None) || s.error() != err)
+    return (v << "valid()/error() disagree with Validate: " << vrlis::Describe(err)).str();
+  const Real probes[] = {q.tmin, q.tmax, Real(0), Real(1), std::numeric_limits<Real>::infinity(),
+                         -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
+  if (!s.valid()) {
+    for (int i = 0; i < n; ++i) {
+      Real u = Real(us[i]);
+      if (!std::isnan(s.sample(u))) return (v << "invalid query: sample(" << u << ") is not NaN").str();
+    }
+    for (Real t : probes) {
+      if (s.pdf(t) != 0) return (v << "invalid query: pdf(" << t << ") = " << s.pdf(t) << ", not 0").str();
+      if (!std::isnan(s.invert(t))) return (v << "invalid query: invert(" << t << ") is not NaN").str();
+    }
+    return {};
+  }
+  bool degenerate = !(s.domain().width() >= std::numeric_limits<Real>::min());
+  if (q.tmax == q.tmin && !degenerate) return (v << "zero-length segment with a non-zero angle width").str();
+  if (degenerate) {
+    for (int i = 0; i < n; ++i)
+      if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "degenerate segment: sample is not tmin").str();
+    for (Real t : probes) {
+      if (s.pdf(t) != 0) return (v << "degenerate segment: pdf(" << t << ") != 0").str();
+      if (!(s.invert(t) == 0)) return (v << "degenerate segment: invert(" << t << ") != 0").str();
+    }
+    return {};
+  }
+  RefQuery ref(q);
+  ref.clamp_margin = 1e-6;
+  for (Real t : probes) {
+    Real p = s.pdf(t), c = s.invert(t);
+    if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
+    if (!std::isnan(t) && !(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
+  }
+  for (int i = 0; i < n; ++i) {
+    Real u = Real(us[i]);
+    Real t = s.sample(u);
+    if (!std::isfinite(t) || t < q.tmin || t > q.tmax)
+      return (v << "sample(" << u << ") = " << t << " outside [" << q.tmin << ", " << q.tmax << "]").str();
+    Real p = s.pdf(t);
+    if (!std::isfinite(p) || p < 0) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
+    // Positive where the integrand is, unless the density is below what Real can hold: the
+    // check applies where equiangular sampling's density exceeds 1e12 times the smallest
+    // normal Real (the samplers' densities are within that factor of it).
+    double f = ref.f(double(t));
+    bool representable = ref.EquiangularDensity(double(t)) > 1e12L * std::numeric_limits<Real>::min();
+    if (f > 0 && std::isfinite(f) && representable && !(p > 0))
+      return (v << "pdf(" << t << ") = 0 where the integrand is " << f << " (u = " << u << ")").str();
+    Real c = s.invert(t);
+    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
+    if (check_round_trip) {
+      double tol = RoundTripTolerance(t, p);
+      if (!(std::abs(double(c) - double(u)) <= tol))
+        return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
+                  << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
+            .str();
+    }
+  }
+  return {};
+}
+
+// VrlPoint's contract.
+template <typename Real>
+bool VrlQueryValid(const vrlis::VrlPointQuery<Real>& q) {
+  auto unit = [](vrlis::Vec3<Real> d) { return std::abs(vrlis::Dot(d, d) - 1) <= Real(2e-3); };
+  return vrlis::IsFinite(q.origin) && vrlis::IsFinite(q.dir) && vrlis::IsFinite(q.line_origin) &&
+         vrlis::IsFinite(q.line_dir) && std::isfinite(q.tmin) && std::isfinite(q.tmax) && q.tmax >= q.tmin &&
+         unit(q.dir) && unit(q.line_dir);
+}
+
+template <typename Real>
+std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQuery<Real>& q, const double* us, int n,
+                          bool check_round_trip = true) {
+  Violation v;
+  v.os.precision(9);
+  bool valid = VrlQueryValid(q);
+  if (s.valid() != valid) return (v << "valid() = " << s.valid() << ", expected " << valid).str();
+  const Real probes[] = {q.tmin, q.tmax, Real(0), std::numeric_limits<Real>::infinity(),
+                         -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
+  if (!valid) {
+    for (int i = 0; i < n; ++i)
+      if (!std::isnan(s.sample(Real(us[i])))) return (v << "invalid query: sample is not NaN").str();
+    for (Real t : probes) {
+      if (s.pdf(t) != 0) return (v << "invalid query: pdf(" << t << ") != 0").str();
+      if (!std::isnan(s.invert(t))) return (v << "invalid query: invert(" << t << ") is not NaN").str();
+    }
+    return {};
+  }
+  if (q.tmax == q.tmin) {
+    for (int i = 0; i < n; ++i)
+      if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "zero-length VRL: sample is not tmin").str();
+    for (Real t : probes) {
+      if (s.pdf(t) != 0) return (v << "zero-length VRL: pdf(" << t << ") != 0").str();
+      if (!(s.invert(t) == 0)) return (v << "zero-length VRL: invert(" << t << ") != 0").str();
+    }
+    return {};
+  }
+  for (Real t : probes) {
+    Real p = s.pdf(t);
+    if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
+  }
+  for (int i = 0; i < n; ++i) {
+    Real u = Real(us[i]);
+    Real t = s.sample(u);
+    if (!std::isfinite(t) || t < q.tmin || t > q.tmax)
+      return (v << "sample(" << u << ") = " << t << " outside [" << q.tmin << ", " << q.tmax << "]").str();
+    Real p = s.pdf(t);
+    if (!std::isfinite(p) || !(p > 0)) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
+    Real c = s.invert(t);
+    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
+    if (check_round_trip) {
+      double tol = RoundTripTolerance(t, p);
+      if (!(std::abs(double(c) - double(u)) <= tol))
+        return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
+                  << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
+            .str();
+    }
+  }
+  return {};
+}
+
+}  // namespace vrlis_stab
