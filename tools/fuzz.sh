@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer target fuzz/fuzz_samplers.cpp with clang++ (-fsanitize=fuzzer,address,undefined)
+# and runs it on the committed corpus in fuzz/corpus for a fixed time; new interesting inputs
+# go to build-fuzz/corpus (merge them into fuzz/corpus with -merge=1 to keep them).
+# Usage: tools/fuzz.sh [seconds=60] [extra libFuzzer flags...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"; shift || true
+out=build-fuzz
+mkdir -p "$out/corpus" "$out/artifacts"
+clang++ -std=c++17 -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+  -Wall -Wextra -Wpedantic -Werror -Iinclude fuzz/fuzz_samplers.cpp -o "$out/fuzz_samplers"
+log="$out/fuzz.log"
+set +e
+"$out/fuzz_samplers" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$out/artifacts/" \
+  "$@" "$out/corpus" fuzz/corpus 2>&1 | tee "$log" | grep -E '^(#[0-9]+ *(INITED|DONE|pulse)|CONTRACT|==|SUMMARY|stat::number_of_executed_units)' 
+rc=${PIPESTATUS[0]}
+set -e
+runs=$(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}' | tail -1)
+echo "fuzz: ${runs:-?} executions in ${seconds} s, exit code $rc (log: $log)"
+exit "$rc"
