@@ -38,11 +38,16 @@ struct QuadratureSettings {
 struct Moments {
   double first = 0;                                    // Int f
   std::array<double, kCameraSamplerCount> second{};    // Int f^2 / p, per sampler
+  // Int (f - p Int f)^2 / p, per sampler, when computed (central[0] >= 0): the variance
+  // without the cancellation of second - first^2, for near-perfect samplers.
+  std::array<double, kCameraSamplerCount> central{-1};
   double rel_error = 0;                                // largest estimated relative error
   int evaluations = 0;                                 // integrand evaluations
   bool converged = true;
 
-  double RelativeVariance(int k) const { return second[k] / (first * first) - 1; }
+  double RelativeVariance(int k) const {
+    return central[0] >= 0 ? central[k] / (first * first) : second[k] / (first * first) - 1;
+  }
 };
 
 // Every sampler of the tuple type fitted to one query.
@@ -74,8 +79,9 @@ inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const Ang
   return kept;
 }
 
-// Camera step for the VRL point y = y(v): Int f du and Int f^2 / p du for every sampler.
-inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSettings& s = {}) {
+// Camera step for the VRL point y = y(v): Int f du and Int f^2 / p du for every sampler;
+// with `central`, a second pass integrates (f - p Int f)^2 / p as well.
+inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSettings& s = {}, bool central = false) {
   constexpr int K = kCameraSamplerCount;
   Vec3<double> y = VrlPointAt(p, v);
   SegmentQuery<double> q = CameraQuery(p, y);
@@ -101,13 +107,31 @@ inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSe
   for (int n = 0; n <= K; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
   m.evaluations = r.evaluations;
   m.converged = r.converged;
+  if (!central) return m;
+  double F = m.first;
+  auto deviation = [&](double delta) {
+    double u = dom.t_at(delta);
+    double fj = IntegrandAt(p, u, y, v) / dom.dtheta_dt(u);
+    std::array<double, K> out{};
+    std::apply([&](const auto&... sampler) {
+      int k = 0;
+      ((out[k++] = [&](double pdf) { return (fj - F * pdf) * (fj - F * pdf) / pdf; }(sampler.distribution().pdf(delta))),
+       ...);
+    }, samplers);
+    return out;
+  };
+  // Absolute floor: variances below 1e-14 F^2 are zero for our purposes.
+  auto c = Integrate<K>(deviation, CameraBreaks(q, dom, samplers), s.inner_tol, s.inner_max, 1e-14 * F * F);
+  m.central = c.value;
+  m.evaluations += c.evaluations;
+  m.converged = m.converged && c.converged;
   return m;
 }
 
 // The camera step alone, at the pair's fixed VRL point VrlPoint.sample(xi_vrl).
 inline Moments CameraStepMoments(const Pair<double>& p, const QuadratureSettings& s = {}) {
   VrlPoint<double> vp(VrlQuery(p));
-  return CameraMoments(p, vp.sample(p.xi_vrl), s);
+  return CameraMoments(p, vp.sample(p.xi_vrl), s, true);
 }
 
 // The whole two-step estimator f(u, v) / (p1(v) p2(u | v)).

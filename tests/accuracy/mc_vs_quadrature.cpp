@@ -86,7 +86,7 @@ double Z(double estimate, double se, double exact) { return std::abs(estimate - 
 }  // namespace
 
 TEST_CASE("quadrature of the relative variance matches Monte Carlo", "[accuracy]") {
-  const int n = 200000;
+  const int n = 120000;
   int checked = 0;
   for (double g : {-0.5, 0.7, 0.9}) {
     auto pairs = MakePairs(kDefaultSeed, 2, g);
@@ -148,7 +148,9 @@ TEST_CASE("the quadrature is converged at g = +-0.99", "[accuracy]") {
       for (int k = 0; k < kCameraSamplerCount; ++k) {
         INFO("g = " << g << ", " << kCameraSamplerNames[k]);
         CHECK(a.RelativeVariance(k) == Approx(b.RelativeVariance(k)).epsilon(1e-4));
-        CHECK(ca.RelativeVariance(k) == Approx(cb.RelativeVariance(k)).epsilon(1e-6));
+        CHECK(ca.RelativeVariance(k) == Approx(cb.RelativeVariance(k)).epsilon(1e-6).margin(1e-12));
+        // The central form agrees with second / first^2 - 1 (which loses digits near 0).
+        CHECK(ca.RelativeVariance(k) == Approx(ca.second[k] / (ca.first * ca.first) - 1).margin(1e-7));
       }
     }
   }
