@@ -1,0 +1,36 @@
+// Camera/<Sampler>/g:<g>: fit from a query, sample, pdf.
+#include "bench_common.hpp"
+
+namespace vrlis::bench {
+namespace {
+
+template <typename Sampler>
+void Camera(benchmark::State& state, double g) {
+  const Pools& pools = PoolsFor(g);
+  size_t i = 0;
+  for (auto _ : state) {
+    Sampler s(pools.camera[i]);
+    float t = s.sample(pools.pairs[i].xi_cam);
+    float pdf = s.pdf(t);
+    benchmark::DoNotOptimize(t);
+    benchmark::DoNotOptimize(pdf);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+template <typename... S>
+void RegisterAll(std::tuple<S...>*) {
+  int k = 0;
+  ((void)[&] {
+     const char* name = kCameraSamplerNames[k++];
+     for (double g : kStudyG)
+       benchmark::RegisterBenchmark(BenchName("Camera", name, g).c_str(), [g](benchmark::State& s) { Camera<S>(s, g); });
+   }(), ...);
+}
+
+}  // namespace
+
+void RegisterCamera() { RegisterAll(static_cast<CameraSamplers<float>*>(nullptr)); }
+
+}  // namespace vrlis::bench

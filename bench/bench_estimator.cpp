@@ -1,0 +1,42 @@
+// Estimator/<Sampler>/g:<g>: the whole medium-to-medium step without visibility.
+#include "bench_common.hpp"
+
+namespace vrlis::bench {
+namespace {
+
+template <typename Sampler>
+void Estimator(benchmark::State& state, double g) {
+  const Pools& pools = PoolsFor(g);
+  size_t i = 0;
+  for (auto _ : state) {
+    const Pair<float>& p = pools.pairs[i];
+    VrlPoint<float> vp(VrlQuery(p));
+    float v = vp.sample(p.xi_vrl);
+    float p1 = vp.pdf(v);
+    Vec3<float> y = VrlPointAt(p, v);
+    Sampler s(CameraQuery(p, y));
+    float u = s.sample(p.xi_cam);
+    float p2 = s.pdf(u);
+    float f = IntegrandAt(p, u, y, v);
+    float estimate = p1 * p2 > 0 ? f / (p1 * p2) : 0.0f;
+    benchmark::DoNotOptimize(estimate);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+template <typename... S>
+void RegisterAll(std::tuple<S...>*) {
+  int k = 0;
+  ((void)[&] {
+     const char* name = kCameraSamplerNames[k++];
+     for (double g : kStudyG)
+       benchmark::RegisterBenchmark(BenchName("Estimator", name, g).c_str(), [g](benchmark::State& s) { Estimator<S>(s, g); });
+   }(), ...);
+}
+
+}  // namespace
+
+void RegisterEstimator() { RegisterAll(static_cast<CameraSamplers<float>*>(nullptr)); }
+
+}  // namespace vrlis::bench

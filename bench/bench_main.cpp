@@ -1,0 +1,56 @@
+// vrlis_bench: the cost of one sample as a renderer pays it, with Google Benchmark.
+//
+//   Camera/<Sampler>/g:<g>     build the sampler from a query (the fit), sample, pdf
+//   Fit/<Sampler>/g:<g>        the fit alone (where Camera's time goes)
+//   Estimator/<Sampler>/g:<g>  the whole medium-to-medium step without visibility: VrlPoint
+//                              (fit, sample, pdf), the camera sampler (fit, sample, pdf), the
+//                              integrand, f / (p1 p2)
+//   VrlPoint                   step one alone (fit, sample, pdf); independent of g
+//
+// Every benchmark cycles in order through a pool of 1024 random queries (the pairs of the
+// accuracy study, seeded), so that no single warm branch is timed. Float throughout; each
+// sampler is its concrete type (no run-time dispatch). One iteration is one sample.
+// Standard flags apply: --benchmark_filter=Novak, --benchmark_format=json, ...
+#include "bench_common.hpp"
+
+namespace vrlis::bench {
+
+const Pools& PoolsFor(double g) {
+  static std::map<double, std::unique_ptr<Pools>> cache;
+  auto& slot = cache[g];
+  if (!slot) {
+    slot = std::make_unique<Pools>();
+    for (const Pair<double>& pd : MakePairs(kDefaultSeed, int(kPool), g)) {
+      Pair<float> p = pd.as<float>();
+      VrlPoint<float> vp(VrlQuery(p));
+      slot->pairs.push_back(p);
+      slot->vrl.push_back(VrlQuery(p));
+      slot->camera.push_back(CameraQuery(p, VrlPointAt(p, vp.sample(p.xi_vrl))));
+    }
+  }
+  return *slot;
+}
+
+}  // namespace vrlis::bench
+
+int main(int argc, char** argv) {
+  using namespace vrlis::bench;
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("vrlis_pool", std::to_string(kPool));
+  benchmark::AddCustomContext("vrlis_seed", std::to_string(kDefaultSeed));
+  benchmark::AddCustomContext("vrlis_real", "float");
+#if defined(__OPTIMIZE__) && defined(NDEBUG)
+  benchmark::AddCustomContext("vrlis_build", "optimised, NDEBUG");
+#else
+  benchmark::AddCustomContext("vrlis_build", "NOT OPTIMISED: timings are meaningless");
+#endif
+  for (double g : kStudyG) PoolsFor(g);  // build every pool before timing anything
+  RegisterVrlPoint();
+  RegisterCamera();
+  RegisterFit();
+  RegisterEstimator();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
