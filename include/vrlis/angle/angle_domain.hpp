@@ -23,7 +23,8 @@ class AngleDomain {
     Real scale = std::abs(d.x) + std::abs(d.y) + std::abs(d.z) + std::abs(tmin_) + (std::isfinite(tmax_) ? std::abs(tmax_) : Real(0));
     Real floor = NoiseFloor(scale);
     // On (or within rounding of) the line the plane is arbitrary; any normal will do.
-    n_ = h_ > floor ? (Real(1) / h_) * perp : AnyPerpendicular(q.dir);
+    on_line_ = !(h_ > floor);
+    n_ = on_line_ ? AnyPerpendicular(q.dir) : (Real(1) / h_) * perp;
     h_ = std::max(h_, floor);
     tan_a_ = (tmin_ - u0_) / h_;
     width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
@@ -35,6 +36,8 @@ class AngleDomain {
   Real u0() const { return u0_; }
   Real h() const { return h_; }
   Vec3<Real> normal() const { return n_; }  // unit, from the foot of the perpendicular to p
+  // p lies on the segment's line up to rounding: h is the noise floor and normal() arbitrary.
+  bool on_line() const { return on_line_; }
   Real tan_theta_a() const { return tan_a_; }
   Real theta_a() const { return std::atan(tan_a_); }
   Real theta_b() const { return theta_a() + width_; }
@@ -44,7 +47,10 @@ class AngleDomain {
   Real offset_at(Real t) const {
     if (!(t < tmax_)) return width_;
     if (!(t > tmin_)) return 0;
-    return OffsetOfSlope((t - tmin_) / h_, (t - u0_) / h_);
+    Real db = (t - tmin_) / h_, b = (t - u0_) / h_;
+    // Beyond h * max<Real> the remaining angle atan(h / (t - u0)) is below 1 / max<Real>.
+    if (!std::isfinite(db) || !std::isfinite(b)) return width_;
+    return OffsetOfSlope(db, b);
   }
 
   // The inverse of offset_at: tan(theta_a + delta) written with the addition formula.
@@ -69,6 +75,7 @@ class AngleDomain {
 
   Real tmin_, tmax_, u0_, h_, tan_a_, width_;
   Vec3<Real> n_;
+  bool on_line_;
 };
 
 }  // namespace vrlis

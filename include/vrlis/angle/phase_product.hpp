@@ -4,6 +4,8 @@
 //
 // Both lobes are evaluated from half-angle sines of offsets that are computed without
 // cancellation, so lobes with |g| -> 1 keep their shape next to an endpoint.
+#include <limits>
+
 #include "../core/phase.hpp"
 #include "angle_domain.hpp"
 
@@ -12,7 +14,10 @@ namespace vrlis {
 template <typename Real>
 class PhaseProduct {
  public:
-  static constexpr Real kRelativeFloor = 0;  // HG lobes are positive everywhere: fit them as they are
+  // A clamped-cosine lobe is zero over part of the domain; a fit must not put a sample
+  // where its density is zero, so node values are kept above this fraction of the largest
+  // (far below anything that changes the variance).
+  static constexpr Real kRelativeFloor = std::numeric_limits<Real>::epsilon();
 
   PhaseProduct(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
       : g_(q.g), g_point_(q.lobe.g), kind_(q.lobe.kind), width_(dom.width()) {
@@ -28,6 +33,10 @@ class PhaseProduct {
     if (kind_ == LobeKind::None) return;
     Vec3<Real> n = dom.normal();
     Real a = -Dot(q.lobe.axis, n), b = Dot(q.lobe.axis, q.dir), c = Dot(q.lobe.axis, Cross(q.dir, n));
+    if (dom.on_line()) {  // the plane is arbitrary: keep only the part along the segment
+      c = std::sqrt(a * a + c * c);
+      a = 0;
+    }
     r_ = std::min(std::sqrt(a * a + b * b), Real(1));
     one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
     // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.

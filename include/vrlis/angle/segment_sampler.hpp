@@ -7,12 +7,15 @@
 //   invert() return NaN and pdf() returns 0: a checkable outcome, never undefined behaviour.
 // - For a valid query, sample(u) for u in [0, 1] is finite and inside [tmin, tmax] (an
 //   unbounded segment samples below the largest finite Real); pdf(t) is finite, zero outside
-//   [tmin, tmax] and positive inside wherever the target is.
+//   [tmin, tmax] and positive inside wherever the target is, except where the density is
+//   below the smallest normal Real (the far end of an unbounded segment, where a sample
+//   clamped to the largest Real gets pdf 0). A sample with pdf 0 contributes nothing.
 // - invert(t) is the CDF of the sampled distribution, so invert(sample(u)) == u up to
 //   rounding for every sampler whose sample() is the CDF's inverse (all but CauchyMixture,
 //   which selects a component first; its round trip holds in distribution).
-// - A zero-length segment (or one whose angle width underflows) has no density: sample()
-//   returns tmin, pdf() returns 0 and invert() returns 0. Its integral is zero; skip it.
+// - A segment shorter than 1 / max<Real> (zero length included), or whose angle width
+//   underflows, has no representable density: sample() returns tmin, pdf() returns 0 and
+//   invert() returns 0. Its integral is (numerically) zero; skip it.
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -30,7 +33,9 @@ class SegmentSampler {
   explicit SegmentSampler(const SegmentQuery<Real>& q, FitArgs&&... fit_args)
       : error_(Validate(q)),
         domain_(error_ == QueryError::None ? q : Fallback()),
-        dist_(Usable() ? q : Fallback(), Usable() ? domain_ : AngleDomain<Real>(Fallback()),
+        usable_(valid() && domain_.width() >= std::numeric_limits<Real>::min() &&
+                (domain_.tmax() - domain_.tmin()) * std::numeric_limits<Real>::max() >= 1),
+        dist_(usable_ ? q : Fallback(), usable_ ? domain_ : AngleDomain<Real>(Fallback()),
               std::forward<FitArgs>(fit_args)...) {}
   // (Distributions copy what they need from the domain; they keep no reference to it.)
 
@@ -40,23 +45,22 @@ class SegmentSampler {
   const Distribution& distribution() const { return dist_; }
 
   Real sample(Real u) const {
-    if (!Usable()) return valid() ? domain_.tmin() : kNaN;
+    if (!usable_) return valid() ? domain_.tmin() : kNaN;
     return domain_.t_at(dist_.sample(u));
   }
 
   Real pdf(Real t) const {
-    if (!Usable() || !(t >= domain_.tmin() && t <= domain_.tmax())) return 0;
+    if (!usable_ || !(t >= domain_.tmin() && t <= domain_.tmax())) return 0;
     return dist_.pdf(domain_.offset_at(t)) * domain_.dtheta_dt(t);
   }
 
   Real invert(Real t) const {
-    if (!Usable()) return valid() ? Real(0) : kNaN;
+    if (!usable_) return valid() ? Real(0) : kNaN;
     return Clamp(dist_.cdf(domain_.offset_at(t)), Real(0), Real(1));
   }
 
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
-  bool Usable() const { return valid() && domain_.width() >= std::numeric_limits<Real>::min(); }
   // Fitting on invalid input could reach undefined behaviour (NaN to int); fit this instead.
   static SegmentQuery<Real> Fallback() {
     SegmentQuery<Real> q;
@@ -68,6 +72,7 @@ class SegmentSampler {
 
   QueryError error_;
   AngleDomain<Real> domain_;
+  bool usable_;  // valid, with a representable density
   Distribution dist_;
 };
 

@@ -9,7 +9,8 @@
 // invert() return NaN and pdf() returns 0. Parallel lines give the uniform density (the
 // limit k -> 0). Intersecting lines (h -> 0) have a non-integrable 1 / |v - v0| target;
 // h is floored at the rounding noise of the inputs, so the density is sharply peaked at
-// v0 but finite. A zero-length VRL samples tmin with pdf 0.
+// v0 but finite. A VRL shorter than 1 / max<Real> (zero length included) samples tmin with
+// pdf 0.
 #include <limits>
 
 #include "../core/math.hpp"
@@ -32,7 +33,7 @@ class VrlPoint {
     valid_ = IsFinite(q.origin) && IsFinite(q.dir) && IsFinite(q.line_origin) && IsFinite(q.line_dir) &&
              std::isfinite(q.tmin) && std::isfinite(q.tmax) && q.tmax >= q.tmin &&
              std::abs(Dot(q.dir, q.dir) - 1) <= Real(2e-3) && std::abs(Dot(q.line_dir, q.line_dir) - 1) <= Real(2e-3);
-    if (!valid_) return;
+    if (!valid_ || !((tmax_ - tmin_) * std::numeric_limits<Real>::max() >= 1)) return;  // no representable density
     Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
     Real sin_a = Length(cross);
     Real along = Dot(d, q.dir);
@@ -51,6 +52,7 @@ class VrlPoint {
   Real sample(Real u) const {
     if (!valid_) return kNaN;
     Real length = tmax_ - tmin_;
+    if (!Representable()) return tmin_;
     if (k_ == 0) return tmin_ + u * length;
     Real d = u * total_, xb = xa_ + k_ * length, v;
     if (xa_ >= 0)  // moving away from v0 from the near end: no cancellation
@@ -63,7 +65,7 @@ class VrlPoint {
   }
 
   Real pdf(Real v) const {
-    if (!valid_ || !(v >= tmin_ && v <= tmax_) || !(tmax_ > tmin_)) return 0;
+    if (!valid_ || !(v >= tmin_ && v <= tmax_) || !Representable()) return 0;
     if (k_ == 0) return 1 / (tmax_ - tmin_);
     Real x = xa_ + k_ * (v - tmin_);
     return k_ / (total_ * std::sqrt(1 + x * x));
@@ -71,7 +73,7 @@ class VrlPoint {
 
   Real invert(Real v) const {
     if (!valid_) return kNaN;
-    if (!(tmax_ > tmin_)) return 0;
+    if (!Representable()) return 0;
     v = Clamp(v, tmin_, tmax_);
     if (k_ == 0) return (v - tmin_) / (tmax_ - tmin_);
     return Clamp(AsinhDifference(xa_, k_ * (v - tmin_)) / total_, Real(0), Real(1));
@@ -79,6 +81,7 @@ class VrlPoint {
 
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+  bool Representable() const { return (tmax_ - tmin_) * std::numeric_limits<Real>::max() >= 1; }
   // sinh(asinh(x0) + d) - x0 for x0 >= 0, d >= 0, as a sum of positive terms.
   static Real Outward(Real x0, Real d) {
     return 2 * x0 * Sqr(std::sinh(d / 2)) + std::sqrt(1 + x0 * x0) * std::sinh(d);
