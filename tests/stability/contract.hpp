@@ -66,7 +66,10 @@ std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<type
     }
     return {};
   }
-  bool degenerate = !(s.domain().width() >= std::numeric_limits<Real>::min());
+  // Degenerate (contract): shorter than 1 / max<Real> (zero length included), or an angle
+  // width that underflows.
+  bool degenerate = !(s.domain().width() >= std::numeric_limits<Real>::min()) ||
+                    !((q.tmax - q.tmin) * std::numeric_limits<Real>::max() >= 1);
   if (q.tmax == q.tmin && !degenerate) return (v << "zero-length segment with a non-zero angle width").str();
   if (degenerate) {
     for (int i = 0; i < n; ++i)
@@ -140,7 +143,7 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
     }
     return {};
   }
-  if (q.tmax == q.tmin) {
+  if (!((q.tmax - q.tmin) * std::numeric_limits<Real>::max() >= 1)) {  // shorter than 1 / max<Real>
     for (int i = 0; i < n; ++i)
       if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "zero-length VRL: sample is not tmin").str();
     for (Real t : probes) {
