@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
     entry["max_rel_error"] = worst;
     entry["unconverged"] = unconverged;
     out["results"].push_back(entry);
-    if (unconverged) std::printf("  warning: %d pairs did not reach the tolerance (worst estimated error %.1e)\n", unconverged, worst);
+    if (unconverged) std::printf("  warning: %d pairs did not reach the tolerance within the evaluation budget (worst estimated relative error %.1e; the G7-K15 estimate is pessimistic)\n", unconverged, worst);
   }
   if (!json_path.empty()) {
     std::ofstream f(json_path);
