@@ -14,12 +14,13 @@ namespace vrlis_stab {
 // The stated round-trip tolerance. A sampler works in the angle offset delta in [0, width]
 // and returns t rounded to Real, so invert(sample(u)) can differ from u by the CDF's change
 // over a few units in the last place of t or of the angle, plus a few hundred epsilons:
-//   |invert(sample(u)) - u| <= 256 eps + 16 pdf(t) (ulp(t) + ulp(width) / (dtheta/dt)).
+//   |invert(sample(u)) - u| <= 256 eps + 64 pdf(t) (ulp(max(|t|, |tmin|)) + ulp(width) / (dtheta/dt)).
+// (t is computed as tmin plus an offset, so its error is an ulp of the larger of the two.)
 // Exempt: samples clamped to the largest finite Real on an unbounded segment (the mass
 // beyond it is not representable; pdf() underflows to 0 there).
-// dtheta_dt = h / (h^2 + (t - u0)^2) from the reference (0: the angle term is dropped).
+// dtheta_dt = h / (h^2 + (t - u0)^2) with the sampler's h (0: the angle term is dropped).
 template <typename Real>
-double RoundTripTolerance(Real t, Real pdf, double width = 0, double dtheta_dt = 0) {
+double RoundTripTolerance(Real t, Real pdf, double width = 0, double dtheta_dt = 0, Real tmin = 0) {
   const Real eps = std::numeric_limits<Real>::epsilon(), inf = std::numeric_limits<Real>::infinity();
   auto ulp = [&](Real x) {
     x = std::abs(x);
@@ -27,7 +28,7 @@ double RoundTripTolerance(Real t, Real pdf, double width = 0, double dtheta_dt =
     return std::isfinite(up) ? up : x - std::nextafter(x, Real(0));
   };
   double angle = dtheta_dt > 0 ? double(ulp(Real(width))) / dtheta_dt : 0;
-  return 256 * double(eps) + 16 * double(pdf) * (double(ulp(t)) + angle);
+  return 256 * double(eps) + 64 * double(pdf) * (double(ulp(std::max(std::abs(t), std::abs(tmin)))) + angle);
 }
 
 struct Violation {
@@ -104,9 +105,7 @@ std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<type
     Real c = s.invert(t);
     if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
     if (check_round_trip && t != std::numeric_limits<Real>::max()) {
-      double hh = ref.h(), x = (double(t) - ref.u0());
-      double dtheta_dt = hh > 0 ? hh / (hh * hh + x * x) : 0;
-      double tol = RoundTripTolerance(t, p, double(s.domain().width()), dtheta_dt);
+      double tol = RoundTripTolerance(t, p, double(s.domain().width()), double(s.domain().dtheta_dt(t)), q.tmin);
       if (!(std::abs(double(c) - double(u)) <= tol))
         return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
                   << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
@@ -166,7 +165,7 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
     Real c = s.invert(t);
     if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
     if (check_round_trip) {
-      double tol = RoundTripTolerance(t, p);
+      double tol = RoundTripTolerance(t, p, 0, 0, q.tmin);
       if (!(std::abs(double(c) - double(u)) <= tol))
         return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
                   << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
