@@ -12,6 +12,7 @@
 #include "samplers/cauchy_mixture.hpp"
 #include "samplers/full_product.hpp"
 #include "samplers/vrl_point.hpp"
+#include "samplers/vrl_marginal.hpp"
 #include "method.hpp"
 
 namespace vrlis {
