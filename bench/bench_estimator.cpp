@@ -1,16 +1,22 @@
-// Estimator/<Sampler>/g:<g>: the whole medium-to-medium step without visibility.
+// Estimator/<Sampler>/g:<g>: the whole medium-to-medium step without visibility, step one by
+// VrlPoint. EstimatorMarginal/<Sampler>/g:<g>: the same with VrlMarginal as step one.
+#include <type_traits>
+
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
 namespace {
 
-template <typename Sampler>
+template <typename Sampler, typename StepOne>
 void Estimator(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
   size_t i = 0;
   for (auto _ : state) {
     const Pair<float>& p = pools.pairs[i];
-    VrlPoint<float> vp(VrlQuery(p));
+    StepOne vp([&] {
+      if constexpr (std::is_same_v<StepOne, VrlPoint<float>>) return VrlQuery(p);
+      else return MarginalQuery(p);
+    }());
     float v = vp.sample(p.xi_vrl);
     float p1 = vp.pdf(v);
     Vec3<float> y = VrlPointAt(p, v);
@@ -31,7 +37,11 @@ void RegisterAll(std::tuple<S...>*) {
   ((void)[&] {
      const char* name = kCameraSamplerNames[k++];
      for (double g : kStudyG)
-       benchmark::RegisterBenchmark(BenchName("Estimator", name, g).c_str(), [g](benchmark::State& s) { Estimator<S>(s, g); });
+       benchmark::RegisterBenchmark(BenchName("Estimator", name, g).c_str(),
+                                    [g](benchmark::State& s) { Estimator<S, VrlPoint<float>>(s, g); });
+     for (double g : kStudyG)
+       benchmark::RegisterBenchmark(BenchName("EstimatorMarginal", name, g).c_str(),
+                                    [g](benchmark::State& s) { Estimator<S, VrlMarginal<float>>(s, g); });
    }(), ...);
 }
 

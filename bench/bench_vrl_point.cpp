@@ -1,4 +1,4 @@
-// VrlPoint: step one alone (fit, sample, pdf).
+// VrlPoint and VrlMarginal/g:<g>: step one alone (fit, sample, pdf).
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
@@ -18,8 +18,27 @@ void VrlPointStep(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+void VrlMarginalStep(benchmark::State& state, double g) {
+  const Pools& pools = PoolsFor(g);
+  size_t i = 0;
+  for (auto _ : state) {
+    VrlMarginal<float> vm(MarginalQuery(pools.pairs[i]));
+    float v = vm.sample(pools.pairs[i].xi_vrl);
+    float pdf = vm.pdf(v);
+    benchmark::DoNotOptimize(v);
+    benchmark::DoNotOptimize(pdf);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 }  // namespace
 
-void RegisterVrlPoint() { benchmark::RegisterBenchmark("VrlPoint", VrlPointStep); }
+void RegisterVrlPoint() {
+  benchmark::RegisterBenchmark("VrlPoint", VrlPointStep);
+  for (double g : kStudyG)
+    benchmark::RegisterBenchmark(BenchName("VrlMarginal", "step", g).c_str(),
+                                 [g](benchmark::State& s) { VrlMarginalStep(s, g); });
+}
 
 }  // namespace vrlis::bench

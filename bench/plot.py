@@ -27,7 +27,10 @@ COLORS = {"Equiangular": "#7f7f7f", "Novak": "#1f77b4", "CauchySum": "#d62728", 
 MARKERS = {"Equiangular": "s", "Novak": "o", "CauchySum": "^", "CauchyMixture": "v", "FullProduct": "D"}
 PUBLISHED = ["Equiangular", "Novak", "CauchySum", "CauchyMixture"]  # FullProduct is vrlis's own
 STEPS = [("camera", "Camera", "camera step (fixed VRL point)"),
-         ("whole", "Estimator", "whole estimator (VRL point + camera point)")]
+         ("whole", "Estimator", "whole estimator (VRL point + camera point)"),
+         ("whole_marginal", "EstimatorMarginal", "whole estimator with VrlMarginal as step one")]
+# The whole estimator with either step one: (step, prefix, label suffix).
+WHOLE = [("whole", "Estimator", ""), ("whole_marginal", "EstimatorMarginal", "+M")]
 UNIT = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 
 
@@ -80,13 +83,14 @@ def main():
     with open(args.accuracy) as f:
         acc = json.load(f)
     gs = [r["g"] for r in acc["results"]]
-    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS} for step, _, _ in STEPS}
+    steps = [st for st in STEPS if all(st[0] in r for r in acc["results"])]
+    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS} for step, _, _ in steps}
 
     def time(prefix, s, g):
         return times.get(f"{prefix}/{s}/{gkey(g)}")
 
     eff = {}
-    for step, prefix, _ in STEPS:
+    for step, prefix, _ in steps:
         for g in gs:
             for s in SAMPLERS:
                 t, rv = time(prefix, s, g), relvar[step][(g, s)]
@@ -148,8 +152,15 @@ def main():
                  + ", ".join(f"{s} {geomean(ts):.0f} ns" for s, ts in fits) + ".")
     L.append("")
 
+    vm = [times.get(f"VrlMarginal/step/{gkey(g)}") for g in gs]
+    if all(vm):
+        L.append(f"VrlMarginal alone (fit + sample + pdf, 8 nodes x 3-point rule): {geomean(vm):.0f} ns "
+                 f"(range over g {min(vm):.0f}-{max(vm):.0f}); the estimator with it as step one is timed as "
+                 f"EstimatorMarginal/<camera sampler>.")
+        L.append("")
+
     # Accuracy and efficiency.
-    for step, prefix, title in STEPS:
+    for step, prefix, title in steps:
         L.append(f"## {title[0].upper() + title[1:]}: relative variance and efficiency\n")
         L.append("| g | " + " | ".join(f"{s} median / mean" for s in SAMPLERS) + " | "
                  + " | ".join(f"{s} eff." for s in SAMPLERS) + " | most efficient (margin) | by median "
@@ -168,6 +179,25 @@ def main():
             L.append(f"| {g:g} | " + " | ".join(f"{fmt(r['median'])} / {fmt(r['mean'])}" for r in rv) + " | "
                      + " | ".join(f"{x:.3g}" for x in ef) + f" | {win} | {winm} | {winp} |")
         L.append("")
+    if "whole_marginal" in relvar:
+        L.append("## Whole estimator, either step one: the most efficient combination\n")
+        L.append("Step one by VrlPoint (no suffix) or VrlMarginal (+M), camera step by each sampler; "
+                 "efficiency from the mean relative variance and the EstimatorMarginal / Estimator times.\n")
+        L.append("| g | best with VrlPoint (eff.) | best with VrlMarginal (eff.) | gain | "
+                 "FullProduct: rel. var. VrlPoint -> +M (mean) | time (ns) | most efficient overall (margin) |")
+        L.append("|---" * 7 + "|")
+        for g in gs:
+            combos = [(s + suffix, eff[(step, g, s)], step, prefix, s) for step, prefix, suffix in WHOLE for s in SAMPLERS]
+            combos = [c for c in combos if math.isfinite(c[1])]
+            combos.sort(key=lambda c: -c[1])
+            bp = max((c for c in combos if c[2] == "whole"), key=lambda c: c[1])
+            bm = max((c for c in combos if c[2] == "whole_marginal"), key=lambda c: c[1])
+            fp0, fp1 = relvar["whole"][(g, "FullProduct")]["mean"], relvar["whole_marginal"][(g, "FullProduct")]["mean"]
+            t0, t1 = time("Estimator", "FullProduct", g), time("EstimatorMarginal", "FullProduct", g)
+            L.append(f"| {g:g} | {bp[0]} ({bp[1]:.3g}) | {bm[0]} ({bm[1]:.3g}) | x{bm[1] / bp[1]:.2f} | "
+                     f"{fmt(fp0)} -> {fmt(fp1)} | {fmt(t0)} -> {fmt(t1)} | "
+                     f"**{combos[0][0]}** (x{combos[0][1] / combos[1][1]:.2f} over {combos[1][0]}) |")
+        L.append("")
     L.append("At g = 0 Novák and both Cauchy samplers draw the equiangular distribution (their relative variances are "
              "equal), so among them only cost differs there; FullProduct also follows transmittance. "
              "FullProduct is vrlis's own sampler (Novák's construction over phases x transmittance, 16 nodes), "
@@ -180,8 +210,8 @@ def main():
         f.write(table)
 
     # Chart 1: time per sample against relative variance.
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-    for ax, (step, prefix, title) in zip(axes, STEPS):
+    fig, axes = plt.subplots(1, len(steps), figsize=(6 * len(steps), 5))
+    for ax, (step, prefix, title) in zip(axes, steps):
         for s in SAMPLERS:
             xs = [time(prefix, s, g) for g in gs]
             ys = [relvar[step][(g, s)]["mean"] for g in gs]
@@ -203,8 +233,8 @@ def main():
     plt.close(fig)
 
     # Chart 2: efficiency against g.
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-    for ax, (step, prefix, title) in zip(axes, STEPS):
+    fig, axes = plt.subplots(1, len(steps), figsize=(6 * len(steps), 5))
+    for ax, (step, prefix, title) in zip(axes, steps):
         for s in SAMPLERS:
             ax.plot(gs, [eff[(step, g, s)] for g in gs], color=COLORS[s], marker=MARKERS[s], label=s)
         ax.set_yscale("log")

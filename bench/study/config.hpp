@@ -90,6 +90,13 @@ VrlPointQuery<Real> VrlQuery(const Pair<Real>& p) {
   return {p.xl, p.wl, Real(0), p.t, p.xc, p.wc};
 }
 
+// Step one following the marginal of the whole integrand (VrlMarginal): the camera
+// segment, g and sigma_t as well.
+template <typename Real>
+VrlMarginalQuery<Real> MarginalQuery(const Pair<Real>& p) {
+  return {p.xl, p.wl, Real(0), p.t, p.xc, p.wc, p.s, p.g, p.sigma_t};
+}
+
 template <typename Real>
 Vec3<Real> VrlPointAt(const Pair<Real>& p, Real v) { return p.xl + v * p.wl; }
 

@@ -41,6 +41,8 @@ struct Moments {
   // Int (f - p Int f)^2 / p, per sampler, when computed (central[0] >= 0): the variance
   // without the cancellation of second - first^2, for near-perfect samplers.
   std::array<double, kCameraSamplerCount> central{-1};
+  // Whole estimator only: Int f^2 / p with VrlMarginal as step one, per camera sampler.
+  std::array<double, kCameraSamplerCount> second_marginal{};
   double rel_error = 0;                                // largest estimated relative error
   int evaluations = 0;                                 // integrand evaluations
   bool converged = true;
@@ -48,6 +50,7 @@ struct Moments {
   double RelativeVariance(int k) const {
     return central[0] >= 0 ? central[k] / (first * first) : second[k] / (first * first) - 1;
   }
+  double RelativeVarianceMarginal(int k) const { return second_marginal[k] / (first * first) - 1; }
 };
 
 // Every sampler of the tuple type fitted to one query.
@@ -134,9 +137,14 @@ inline Moments CameraStepMoments(const Pair<double>& p, const QuadratureSettings
   return CameraMoments(p, vp.sample(p.xi_vrl), s, true);
 }
 
-// The whole two-step estimator f(u, v) / (p1(v) p2(u | v)).
+// The whole two-step estimator f(u, v) / (p1(v) p2(u | v)), with VrlPoint as step one and
+// with VrlMarginal (density pm(v)) as step one:
+//   E[(f / (pm p2))^2] = Int dv (1 / pm) Int du f^2 / p2 = Int dxi (1 / (p1 pm)) Int du f^2 / p2,
+// on the same outer variable xi (VrlPoint's), broken at VrlMarginal's nodes (its kinks).
 inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s = {}) {
+  constexpr int K = kCameraSamplerCount;
   VrlPoint<double> vp(VrlQuery(p));
+  VrlMarginal<double> vm(MarginalQuery(p));
   Moments m;
   int inner_evaluations = 0;
   bool inner_converged = true;
@@ -147,14 +155,19 @@ inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s =
     inner_evaluations += c.evaluations;
     inner_converged = inner_converged && c.converged;
     inner_error = std::max(inner_error, c.rel_error);
-    std::array<double, kCameraSamplerCount + 1> out{c.first / p1};
-    for (int k = 0; k < kCameraSamplerCount; ++k) out[k + 1] = c.second[k] / (p1 * p1);
+    double pm = vm.pdf(v);
+    std::array<double, 2 * K + 1> out{c.first / p1};
+    for (int k = 0; k < K; ++k) {
+      out[k + 1] = c.second[k] / (p1 * p1);
+      out[K + k + 1] = c.second[k] / (p1 * pm);
+    }
     return out;
   };
   // Eight even pieces plus the VRL parameter closest to the camera line: Novák's node layout
   // jumps with v, so the outer integrand has steps that the adaptivity must find.
   std::vector<double> breaks;
   for (int i = 0; i <= 8; ++i) breaks.push_back(i / 8.0);
+  for (int j = 0; j < VrlMarginal<double>::kNodeCount; ++j) breaks.push_back(VrlMarginal<double>::node(j));
   Vec3<double> c = Cross(p.wl, p.wc);
   double sin2 = Dot(c, c);
   if (sin2 > 1e-12) {
@@ -162,10 +175,13 @@ inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s =
     double v0 = (Dot(d, p.wl) - Dot(d, p.wc) * Dot(p.wl, p.wc)) / sin2;
     if (v0 > 0 && v0 < p.t) breaks.push_back(vp.invert(v0));
   }
-  auto r = Integrate<kCameraSamplerCount + 1>(integrand, breaks, s.outer_tol, s.outer_max);
+  auto r = Integrate<2 * K + 1>(integrand, breaks, s.outer_tol, s.outer_max);
   m.first = r.value[0];
-  for (int k = 0; k < kCameraSamplerCount; ++k) m.second[k] = r.value[k + 1];
-  for (int n = 0; n <= kCameraSamplerCount; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
+  for (int k = 0; k < K; ++k) {
+    m.second[k] = r.value[k + 1];
+    m.second_marginal[k] = r.value[K + k + 1];
+  }
+  for (int n = 0; n <= 2 * K; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
   m.rel_error = std::max(m.rel_error, inner_error);
   m.evaluations = inner_evaluations;
   m.converged = r.converged && inner_converged;
