@@ -41,6 +41,10 @@ How to read the hard cases:
   so at |g| = 0.999 the float and double Cauchy samplers are *different distributions*: the float-versus-
   double column then measures that choice, not rounding error; each precision is self-consistent (see its
   own round trip and weights).
+- VrlPoint in float: *h = 1e-9* and *length 1e6* are below float's resolution of v near the closest
+  point (h is floored at the rounding noise of the inputs, and v0 itself is a float), so single float
+  samples can carry large weights; double is exact (weight 1 everywhere). *intersecting* lines have a
+  non-integrable target (1 / |v - v0|); the density is sharply peaked but finite.
 - CauchyMixture's sample() picks a component first, so its pointwise round trip does not hold; its
   column is the Kolmogorov-Smirnov distance of invert(sample(U)) from uniform over stratified U (~1/n when right).
 

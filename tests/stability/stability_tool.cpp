@@ -155,6 +155,10 @@ void Measure(const std::string& method, const HardCase& hc, Row& row, int n) {
   }
   row.cell["fd|" + key] = Fmt(Disagreement(sf, sd, n / 10));
   std::string ks = mixture ? " KS" : "";
+  if (!(qd.tmax > qd.tmin)) {
+    row.cell["rt|" + key] = "n/a (zero length)";
+    return;
+  }
   row.cell["rt|" + key] = Fmt(RoundTrip(sf, n / 10, mixture)) + " / " + Fmt(RoundTrip(sd, n / 10, mixture)) + ks;
 }
 
@@ -248,9 +252,11 @@ int main(int argc, char** argv) {
       wd = why + (a.violations ? " !" : "");
       wf = why + (b.violations ? " !" : "");
     }
-    std::printf("| %s | %s | %s | %s | %s / %s |\n", hc.name.c_str(), wd.c_str(), wf.c_str(),
-                Fmt(Disagreement(sf, sd, n / 10)).c_str(), Fmt(RoundTrip(sf, n / 10, false)).c_str(),
-                Fmt(RoundTrip(sd, n / 10, false)).c_str());
+    std::string rt = qd.tmax > qd.tmin
+                         ? Fmt(RoundTrip(sf, n / 10, false)) + " / " + Fmt(RoundTrip(sd, n / 10, false))
+                         : std::string("n/a (zero length)");
+    std::printf("| %s | %s | %s | %s | %s |\n", hc.name.c_str(), wd.c_str(), wf.c_str(),
+                Fmt(Disagreement(sf, sd, n / 10)).c_str(), rt.c_str());
   }
 
   std::printf("\n## Contract violations (cells marked !)\n\n");
