@@ -56,6 +56,7 @@ class VrlMarginal {
 
  public:
   using Real = R;
+  static constexpr int kNodeCount = kNodes;
   static constexpr Real kRelativeFloor = Real(0.02);
 
   explicit VrlMarginal(const VrlMarginalQuery<Real>& q) : vp_(q.vrl_point_query()) {
