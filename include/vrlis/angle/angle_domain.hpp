@@ -57,7 +57,9 @@ class AngleDomain {
   Real t_at(Real delta) const {
     Real s = std::sin(delta), c = std::cos(delta);
     Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
-    Real t = denom > 0 ? tmin_ + (h_ + (tmin_ - u0_) * tan_a_) * s / denom : tmax_;
+    Real step = denom > 0 ? s / denom : std::numeric_limits<Real>::infinity();
+    if (!(step > 0)) return tmin_;  // h (1 + A^2) may overflow; never multiply it by 0
+    Real t = tmin_ + (h_ + (tmin_ - u0_) * tan_a_) * step;
     return Clamp(t, tmin_, LargestSample());
   }
 

@@ -12,9 +12,11 @@
 //   clamped to the largest Real gets pdf 0). A sample with pdf 0 contributes nothing.
 // - invert(t) is the CDF of the sampled distribution, so invert(sample(u)) == u up to
 //   rounding for every sampler whose sample() is the CDF's inverse (all but CauchyMixture,
-//   which selects a component first; its round trip holds in distribution).
-// - A segment shorter than 1 / max<Real> (zero length included), or whose angle width
-//   underflows, has no representable density: sample() returns tmin, pdf() returns 0 and
+//   which selects a component first; its round trip holds in distribution). When p lies on
+//   the segment's line up to rounding (domain().on_line()), the density is a spike as wide
+//   as that rounding and the round trip holds only to the resolution of t.
+// - A segment shorter than min<Real> / epsilon<Real> (zero length included), or whose angle
+//   width underflows, has no representable density: sample() returns tmin, pdf() returns 0 and
 //   invert() returns 0. Its integral is (numerically) zero; skip it.
 #include <limits>
 #include <type_traits>
@@ -34,7 +36,7 @@ class SegmentSampler {
       : error_(Validate(q)),
         domain_(error_ == QueryError::None ? q : Fallback()),
         usable_(valid() && domain_.width() >= std::numeric_limits<Real>::min() &&
-                (domain_.tmax() - domain_.tmin()) * std::numeric_limits<Real>::max() >= 1),
+                RepresentableLength(domain_.tmax() - domain_.tmin())),
         dist_(usable_ ? q : Fallback(), usable_ ? domain_ : AngleDomain<Real>(Fallback()),
               std::forward<FitArgs>(fit_args)...) {}
   // (Distributions copy what they need from the domain; they keep no reference to it.)

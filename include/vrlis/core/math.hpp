@@ -65,10 +65,18 @@ Real AsinhDifference(Real xa, Real dx) {
 }
 
 // The smallest positive distance we trust for a quantity computed from coordinates of
-// magnitude `scale`: below it, the value is rounding noise.
+// magnitude `scale`: below it, the value is rounding noise. Never below sqrt(min<Real>),
+// so that densities like 1 / h stay finite.
 template <typename Real>
 Real NoiseFloor(Real scale) {
-  return 4 * std::numeric_limits<Real>::epsilon() * scale + std::numeric_limits<Real>::min();
+  return 4 * std::numeric_limits<Real>::epsilon() * scale + std::sqrt(std::numeric_limits<Real>::min());
+}
+
+// Whether an interval of this length has a representable density: differences inside it
+// must be normal numbers (shorter ones are numerically a point).
+template <typename Real>
+bool RepresentableLength(Real length) {
+  return length * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min();
 }
 
 }  // namespace vrlis

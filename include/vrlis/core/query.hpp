@@ -2,6 +2,7 @@
 // What a camera-segment sampler is asked: a segment, a point, and the two phase lobes
 // whose product it should follow.
 #include <cmath>
+#include <limits>
 
 #include "vec3.hpp"
 
@@ -41,6 +42,7 @@ enum class QueryError {
   ReversedSegment,    // tmax < tmin
   InvalidAsymmetry,   // |g| >= 1
   NegativeExtinction,
+  OutOfRange,         // a coordinate beyond MaxCoordinate<Real>(): squared distances would overflow
 };
 
 inline const char* Describe(QueryError e) {
@@ -51,13 +53,24 @@ inline const char* Describe(QueryError e) {
     case QueryError::ReversedSegment: return "segment has tmax < tmin";
     case QueryError::InvalidAsymmetry: return "Henyey-Greenstein g outside (-1, 1)";
     case QueryError::NegativeExtinction: return "negative extinction";
+    case QueryError::OutOfRange: return "coordinate too large for this floating-point type";
   }
   return "unknown";
 }
 
+// Coordinates and segment bounds must stay below this (finite tmax included) so that the
+// squared distances the samplers form cannot overflow: about 2e18 in float, 1e153 in double.
+template <typename Real>
+Real MaxCoordinate() { return std::sqrt(std::numeric_limits<Real>::max()) / 8; }
+
 namespace detail {
 template <typename Real>
 bool IsUnit(Vec3<Real> v) { return std::abs(Dot(v, v) - 1) <= Real(2e-3); }
+template <typename Real>
+bool InRange(Vec3<Real> v) {
+  Real m = MaxCoordinate<Real>();
+  return std::abs(v.x) <= m && std::abs(v.y) <= m && std::abs(v.z) <= m;
+}
 template <typename Real>
 bool IsAsymmetry(Real g) { return std::abs(g) < 1; }  // false for NaN too
 }  // namespace detail
@@ -74,6 +87,9 @@ QueryError Validate(const SegmentQuery<Real>& q) {
   if (!detail::IsAsymmetry(q.g) || (q.lobe.kind == LobeKind::HenyeyGreenstein && !detail::IsAsymmetry(q.lobe.g)))
     return QueryError::InvalidAsymmetry;
   if (q.sigma_t < 0) return QueryError::NegativeExtinction;
+  if (!detail::InRange(q.origin) || !detail::InRange(q.point) || std::abs(q.tmin) > MaxCoordinate<Real>() ||
+      (std::isfinite(q.tmax) && std::abs(q.tmax) > MaxCoordinate<Real>()))
+    return QueryError::OutOfRange;
   return QueryError::None;
 }
 

@@ -58,8 +58,11 @@ struct CauchyLobes {
   void Add(Real peak, Real peak_value, Real width, bool segment) {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
     // (the seed's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
-    Real resolvable = 64 * std::numeric_limits<Real>::epsilon() * (width + std::abs(peak));
-    lobe[count] = TruncatedCauchy<Real>(peak, std::max(1 / (kPi<Real> * peak_value), resolvable), width);
+    Real extent = width + std::abs(peak), scale = 1 / (kPi<Real> * peak_value);
+    // So wide that it is constant over the interval to the last digit: a flat lobe.
+    if (!(extent >= scale * std::sqrt(std::numeric_limits<Real>::epsilon()))) return;
+    Real resolvable = 64 * std::numeric_limits<Real>::epsilon() * extent;
+    lobe[count] = TruncatedCauchy<Real>(peak, std::max(scale, resolvable), width);
     from_segment[count++] = segment;
   }
 };

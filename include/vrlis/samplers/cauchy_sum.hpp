@@ -5,6 +5,8 @@
 // cauchy_lobe.hpp). Setting that argument to S = u (mass1 + mass2)
 // gives Im(z1 z2 e^{-iS}) = 0, a quadratic in delta. Of its two roots the wanted one is
 // where the argument crosses S increasing, i.e. where the quadratic's slope is +sqrt(disc).
+#include <algorithm>
+
 #include "../angle/segment_sampler.hpp"
 #include "cauchy_lobe.hpp"
 
@@ -53,6 +55,10 @@ class CauchySumAngle {
     Real a = -(g1 * m2 + g2 * m1) * cs - (m1 * m2 - g1 * g2) * sn;
     Real b = (g1 * p2 + g2 * p1) * cs + (p1 * m2 + p2 * m1) * sn;
     Real c = -p1 * p2 * sn;
+    Real norm = std::max({std::abs(a), std::abs(b), std::abs(c)});  // keep b^2 - 4ac finite
+    a /= norm;
+    b /= norm;
+    c /= norm;
     Real root = SafeSqrt(b * b - 4 * a * c);
     // (-b + root) / (2a), in whichever form does not cancel.
     Real delta = b > 0 ? -2 * c / (b + root) : (-b + root) / (2 * a);

@@ -30,22 +30,23 @@ class PiecewiseLinearAngle {
 
  public:
   using Real = R;
-  PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
+  // Nodes are kept in units of the interval width and values in units of the largest, so
+  // that neither tiny intervals nor tiny integrands push the areas into subnormals.
+  PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : width_(dom.width()) {
     Target target(q, dom);
-    Real width = dom.width(), peak = target.point_peak();
-    if (!target.point_lobe_flat() && peak > 0 && peak < width) {
-      int split = static_cast<int>(std::lround(peak / width * (kNodes - 1)));
+    Real peak = target.point_peak() / width_;
+    if (!target.point_lobe_flat() && peak > 0 && peak < 1) {
+      int split = static_cast<int>(std::lround(peak * (kNodes - 1)));
       split = Clamp(split, 1, kNodes - 2);
       PlaceWarped(0, Real(0), peak, split);
-      PlaceWarped(split, peak, width, kNodes - 1 - split);
+      PlaceWarped(split, peak, Real(1), kNodes - 1 - split);
     } else {
-      PlaceWarped(0, Real(0), width, kNodes - 1);
+      PlaceWarped(0, Real(0), Real(1), kNodes - 1);
     }
-    for (int j = 0; j < kNodes; ++j) value_[j] = target(node_[j]);
-    if constexpr (Target::kRelativeFloor > 0) {
-      Real floor = Target::kRelativeFloor * *std::max_element(value_.begin(), value_.end());
-      for (Real& v : value_) v = std::max(v, floor);
-    }
+    for (int j = 0; j < kNodes; ++j) value_[j] = target(node_[j] * width_);
+    Real largest = *std::max_element(value_.begin(), value_.end());
+    if (largest > 0 && std::isfinite(largest))
+      for (Real& v : value_) v = std::max(v / largest, Target::kRelativeFloor);
     Accumulate();
     if (!(cdf_[kNodes - 1] > 0) || !std::isfinite(cdf_[kNodes - 1])) {  // a target zero at every node
       value_.fill(1);
@@ -59,21 +60,27 @@ class PiecewiseLinearAngle {
     while (j < kNodes - 2 && !(cdf_[j + 1] > target)) ++j;
     Real area = cdf_[j + 1] - cdf_[j];
     Real v = area > 0 ? Clamp((target - cdf_[j]) / area, Real(0), Real(1)) : Real(0);
-    return node_[j] + SampleLinear(v, value_[j], value_[j + 1]) * (node_[j + 1] - node_[j]);
+    return (node_[j] + SampleLinear(v, value_[j], value_[j + 1]) * (node_[j + 1] - node_[j])) * width_;
   }
 
   Real pdf(Real delta) const {
-    int j = Interval(delta);
-    return Lerp(delta, j) / cdf_[kNodes - 1];
+    Real x = delta / width_;
+    return Lerp(x, Interval(x)) / (cdf_[kNodes - 1] * width_);
   }
 
   Real cdf(Real delta) const {
-    int j = Interval(delta);
-    Real partial = (value_[j] + Lerp(delta, j)) / 2 * (delta - node_[j]);
+    Real x = delta / width_;
+    int j = Interval(x);
+    Real partial = (value_[j] + Lerp(x, j)) / 2 * (x - node_[j]);
     return (cdf_[j] + partial) / cdf_[kNodes - 1];
   }
 
-  const std::array<Real, kNodes>& nodes() const { return node_; }
+  // The node offsets (delta) of the fit.
+  std::array<Real, kNodes> nodes() const {
+    std::array<Real, kNodes> out;
+    for (int j = 0; j < kNodes; ++j) out[j] = node_[j] * width_;
+    return out;
+  }
 
  private:
   // start + (end - start) (1 - cos(pi j / count)) / 2 for j = 0..count, written from index first.
@@ -99,23 +106,24 @@ class PiecewiseLinearAngle {
     for (int j = 0; j + 1 < kNodes; ++j) cdf_[j + 1] = cdf_[j] + (value_[j] + value_[j + 1]) / 2 * (node_[j + 1] - node_[j]);
   }
 
-  // The interval [node_j, node_j+1] holding delta (binary search).
-  int Interval(Real delta) const {
+  // The interval [node_j, node_j+1] holding x (binary search).
+  int Interval(Real x) const {
     int lo = 0, hi = kNodes - 2;
     while (lo < hi) {
       int mid = (lo + hi + 1) / 2;
-      if (node_[mid] <= delta) lo = mid; else hi = mid - 1;
+      if (node_[mid] <= x) lo = mid; else hi = mid - 1;
     }
     return lo;
   }
 
-  Real Lerp(Real delta, int j) const {
+  Real Lerp(Real x, int j) const {
     Real span = node_[j + 1] - node_[j];
-    Real s = span > 0 ? Clamp((delta - node_[j]) / span, Real(0), Real(1)) : Real(0);
+    Real s = span > 0 ? Clamp((x - node_[j]) / span, Real(0), Real(1)) : Real(0);
     return value_[j] + s * (value_[j + 1] - value_[j]);
   }
 
-  std::array<Real, kNodes> node_, value_, cdf_;
+  Real width_;
+  std::array<Real, kNodes> node_, value_, cdf_;  // nodes in units of width_, values of the largest
 };
 
 // Novák et al.: the phase product, 10 nodes as in the public implementation.

@@ -5,15 +5,17 @@
 // The CDF is asinh(x(v)) - asinh(x(tmin)), computed without cancellation.
 //
 // Contract: valid() is false for non-finite input (tmax too: the density's tail makes an
-// unbounded VRL unnormalisable), non-unit directions and tmax < tmin; then sample() and
+// unbounded VRL unnormalisable), non-unit directions, tmax < tmin and coordinates beyond
+// MaxCoordinate<Real>(); then sample() and
 // invert() return NaN and pdf() returns 0. Parallel lines give the uniform density (the
 // limit k -> 0). Intersecting lines (h -> 0) have a non-integrable 1 / |v - v0| target;
 // h is floored at the rounding noise of the inputs, so the density is sharply peaked at
-// v0 but finite. A VRL shorter than 1 / max<Real> (zero length included) samples tmin with
-// pdf 0.
+// v0 but finite. A VRL shorter than min<Real> / epsilon<Real> (zero length included)
+// samples tmin with pdf 0.
 #include <limits>
 
 #include "../core/math.hpp"
+#include "../core/query.hpp"
 #include "../core/vec3.hpp"
 
 namespace vrlis {
@@ -32,8 +34,10 @@ class VrlPoint {
   explicit VrlPoint(const VrlPointQuery<Real>& q) : tmin_(q.tmin), tmax_(q.tmax) {
     valid_ = IsFinite(q.origin) && IsFinite(q.dir) && IsFinite(q.line_origin) && IsFinite(q.line_dir) &&
              std::isfinite(q.tmin) && std::isfinite(q.tmax) && q.tmax >= q.tmin &&
-             std::abs(Dot(q.dir, q.dir) - 1) <= Real(2e-3) && std::abs(Dot(q.line_dir, q.line_dir) - 1) <= Real(2e-3);
-    if (!valid_ || !((tmax_ - tmin_) * std::numeric_limits<Real>::max() >= 1)) return;  // no representable density
+             std::abs(Dot(q.dir, q.dir) - 1) <= Real(2e-3) && std::abs(Dot(q.line_dir, q.line_dir) - 1) <= Real(2e-3) &&
+             detail::InRange(q.origin) && detail::InRange(q.line_origin) && std::abs(q.tmin) <= MaxCoordinate<Real>() &&
+             std::abs(q.tmax) <= MaxCoordinate<Real>();
+    if (!valid_ || !Representable()) return;
     Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
     Real sin_a = Length(cross);
     Real along = Dot(d, q.dir);
@@ -53,7 +57,7 @@ class VrlPoint {
     if (!valid_) return kNaN;
     Real length = tmax_ - tmin_;
     if (!Representable()) return tmin_;
-    if (k_ == 0) return tmin_ + u * length;
+    if (k_ == 0) return std::min(tmin_ + u * length, tmax_);
     Real d = u * total_, xb = xa_ + k_ * length, v;
     if (xa_ >= 0)  // moving away from v0 from the near end: no cancellation
       v = tmin_ + Outward(xa_, d) / k_;
@@ -81,7 +85,7 @@ class VrlPoint {
 
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
-  bool Representable() const { return (tmax_ - tmin_) * std::numeric_limits<Real>::max() >= 1; }
+  bool Representable() const { return RepresentableLength(tmax_ - tmin_); }
   // sinh(asinh(x0) + d) - x0 for x0 >= 0, d >= 0, as a sum of positive terms.
   static Real Outward(Real x0, Real d) {
     return 2 * x0 * Sqr(std::sinh(d / 2)) + std::sqrt(1 + x0 * x0) * std::sinh(d);
