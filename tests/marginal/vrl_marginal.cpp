@@ -1,0 +1,372 @@
+// VrlMarginal: the step-one sampler following the marginal of the whole medium-to-medium
+// integrand. Checked in float and double on seeded random configurations:
+// - the pdf integrates to 1 (Boost.Math Gauss-Kronrod, split at the nodes and the closest point);
+// - Pearson chi-square of samples against the pdf integrated over bins (pooled, Bonferroni);
+// - invert(sample(u)) == u;
+// - the whole estimator f / (p1 p2) with FullProduct as step two is unbiased: its mean is
+//   within 4 standard errors of a nested 2D quadrature of the full integrand;
+// - finite, in-range outputs on degenerate input and NaN / 0 on invalid input.
+#include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <type_traits>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <vrlis/vrlis.hpp>
+
+namespace {
+
+using namespace vrlis;
+using V3 = Vec3<double>;
+
+struct Config {
+  V3 xc, wc;
+  double s;
+  V3 xl, wl;
+  double t, g, sigma_t;
+};
+
+V3 Direction(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(0, 1);
+  double z = 2 * U(rng) - 1, phi = 2 * kPi<double> * U(rng), r = std::sqrt(std::max(0.0, 1 - z * z));
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+// The accuracy study's distribution: lengths log-uniform [0.25, 4], the VRL starting at a
+// log-uniform distance [0.1, 3] from a point of the camera segment.
+Config RandomConfig(std::mt19937_64& rng, double g, double sigma_t) {
+  std::uniform_real_distribution<double> U(0, 1);
+  auto log_uniform = [&](double a, double b) { return a * std::exp(std::log(b / a) * U(rng)); };
+  Config c;
+  c.xc = {0.3, -0.2, 0.1};
+  c.wc = Direction(rng);
+  c.s = log_uniform(0.25, 4);
+  V3 anchor = c.xc + U(rng) * c.s * c.wc;
+  c.xl = anchor + log_uniform(0.1, 3) * Direction(rng);
+  c.wl = Direction(rng);
+  c.t = log_uniform(0.25, 4);
+  c.g = g;
+  c.sigma_t = sigma_t;
+  return c;
+}
+
+template <typename Real>
+Vec3<Real> Cast(V3 a) { return {Real(a.x), Real(a.y), Real(a.z)}; }
+
+template <typename Real>
+VrlMarginalQuery<Real> Query(const Config& c) {
+  return {Cast<Real>(c.xl), Cast<Real>(c.wl), Real(0), Real(c.t), Cast<Real>(c.xc), Cast<Real>(c.wc),
+          Real(c.s), Real(c.g), Real(c.sigma_t)};
+}
+
+double Hg(double g, V3 a, V3 b) {  // HG(g, a . b) for unit a, b, exact near both peaks
+  V3 dm = b - a, dp = b + a;
+  return HenyeyGreenstein(g, Dot(dm, dm) / 2, Dot(dp, dp) / 2);
+}
+
+// The full medium-to-medium integrand (section 1 of the maths note) without visibility.
+double Integrand(const Config& c, double u, double v) {
+  V3 w = (c.xl + v * c.wl) - (c.xc + u * c.wc);
+  double d2 = Dot(w, w), d = std::sqrt(d2);
+  V3 wh = (1 / d) * w;
+  return Hg(c.g, c.wc, wh) * Hg(c.g, -c.wl, wh) * std::exp(-c.sigma_t * (u + v + d)) / d2;
+}
+
+// Gauss-Kronrod over each piece. A float density is smooth only to float rounding, so its
+// error estimate never falls below ~1e-7: callers pass a shallow depth for it.
+template <typename F>
+double Pieces(F f, std::vector<double> x, double tol = 1e-10, unsigned depth = 10) {
+  std::sort(x.begin(), x.end());
+  double sum = 0, error = 0;
+  for (size_t i = 0; i + 1 < x.size(); ++i)
+    if (x[i + 1] > x[i])
+      sum += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, x[i], x[i + 1], depth, tol, &error);
+  return sum;
+}
+
+template <typename Real>
+constexpr unsigned kDepth = std::is_same_v<Real, float> ? 2 : 10;
+
+// The VRL parameter closest to the camera line, clamped to [0, t] (NaN when parallel).
+double ClosestV(const Config& c) {
+  V3 cr = Cross(c.wl, c.wc);
+  double sin2 = Dot(cr, cr);
+  if (sin2 < 1e-12) return std::numeric_limits<double>::quiet_NaN();
+  V3 d = c.xc - c.xl;
+  return std::clamp((Dot(d, c.wl) - Dot(d, c.wc) * Dot(c.wl, c.wc)) / sin2, 0.0, c.t);
+}
+
+// Breakpoints in v: the fit's nodes (kinks), the closest point and a geometric refinement
+// towards it (VrlPoint's inverse-distance peak).
+template <typename Real>
+std::vector<double> VBreaks(const Config& c, const VrlMarginal<Real>& m) {
+  std::vector<double> x = {0, c.t};
+  for (int j = 0; j < VrlMarginal<Real>::kNodeCount; ++j) x.push_back(double(m.vrl_point().sample(VrlMarginal<Real>::node(j))));
+  double v0 = ClosestV(c);
+  if (std::isfinite(v0))
+    for (int k = 1; k <= 30; k += 2)
+      for (double sgn : {-1.0, 1.0}) {
+        double v = v0 + sgn * c.t * std::ldexp(1.0, -k);
+        if (v > 0 && v < c.t) x.push_back(v);
+      }
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  return x;
+}
+
+template <typename Real>
+std::vector<Config> Configs(int count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Config> out;
+  const double gs[] = {-0.99, -0.9, -0.5, 0, 0.3, 0.7, 0.9, 0.99};
+  const double sigmas[] = {0, 0.3, 1, 3};
+  for (int i = 0; i < count; ++i) out.push_back(RandomConfig(rng, gs[i % 8], sigmas[(i / 8) % 4]));
+  return out;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", "", float, double) {
+  using Real = TestType;
+  const double tol_round = std::is_same_v<Real, float> ? 2e-3 : 1e-9;
+  const double tol_norm = std::is_same_v<Real, float> ? 2e-3 : 1e-7;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (const Config& c : Configs<Real>(64, 11)) {
+    VrlMarginal<Real> m(Query<Real>(c));
+    REQUIRE(m.valid());
+    double norm = Pieces([&](double v) { return double(m.pdf(Real(v))); }, VBreaks(c, m), 1e-9, kDepth<Real>);
+    INFO("g " << c.g << " sigma_t " << c.sigma_t);
+    CHECK(std::abs(norm - 1) < tol_norm);
+    double worst = 0;
+    for (int i = 0; i <= 200; ++i) {
+      double u = i < 200 ? U(rng) : 1.0;
+      if (i == 0) u = 0;
+      Real v = m.sample(Real(u));
+      REQUIRE(std::isfinite(v));
+      REQUIRE(v >= 0);
+      REQUIRE(v <= Real(c.t));
+      REQUIRE(m.pdf(v) > 0);
+      worst = std::max(worst, std::abs(double(m.invert(v)) - u));
+    }
+    CHECK(worst < tol_round);
+  }
+}
+
+TEMPLATE_TEST_CASE("VrlMarginal: chi-square of samples against the pdf", "", float, double) {
+  using Real = TestType;
+  const int kConfigs = 24, kBins = 48, kSamples = 40000;
+  const double alpha = 0.01 / (2 * kConfigs);  // Bonferroni over every chi-square test in this file
+  std::mt19937_64 rng(20240611);
+  std::uniform_real_distribution<double> U(0, 1);
+  int failures = 0;
+  for (const Config& c : Configs<Real>(kConfigs, 5)) {
+    VrlMarginal<Real> m(Query<Real>(c));
+    REQUIRE(m.valid());
+    // Bins of equal VrlPoint probability (fine where the density is peaked), refined at the nodes.
+    std::vector<double> edges;
+    for (int i = 0; i <= kBins; ++i) edges.push_back(double(m.vrl_point().sample(Real(double(i) / kBins))));
+    edges.front() = 0;
+    edges.back() = c.t;
+    std::vector<double> breaks = VBreaks(c, m);
+    std::vector<double> expected(kBins), observed(kBins, 0);
+    for (int b = 0; b < kBins; ++b) {
+      std::vector<double> x = {edges[b], edges[b + 1]};
+      for (double v : breaks)
+        if (v > edges[b] && v < edges[b + 1]) x.push_back(v);
+      expected[b] = kSamples * Pieces([&](double v) { return double(m.pdf(Real(v))); }, x, 1e-9, kDepth<Real>);
+    }
+    for (int i = 0; i < kSamples; ++i) {
+      double v = double(m.sample(Real(U(rng))));
+      int b = int(std::upper_bound(edges.begin(), edges.end(), v) - edges.begin()) - 1;
+      observed[std::clamp(b, 0, kBins - 1)] += 1;
+    }
+    // Pool adjacent bins until each expects at least 5 samples.
+    double chi2 = 0, e = 0, o = 0;
+    int dof = -1;
+    for (int b = 0; b < kBins; ++b) {
+      e += expected[b];
+      o += observed[b];
+      if (e >= 5 || b == kBins - 1) {
+        if (e > 0) {
+          chi2 += (o - e) * (o - e) / e;
+          ++dof;
+        }
+        e = o = 0;
+      }
+    }
+    REQUIRE(dof >= 1);
+    double p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(dof), chi2));
+    INFO("g " << c.g << " sigma_t " << c.sigma_t << " chi2 " << chi2 << " dof " << dof << " p " << p);
+    CHECK(p > alpha);
+    failures += !(p > alpha);
+  }
+  CHECK(failures == 0);
+}
+
+TEMPLATE_TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased", "", float, double) {
+  using Real = TestType;
+  const int kSamples = 100000;
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::mt19937_64 crng(31);
+  const double gs[] = {-0.9, -0.3, 0, 0.5, 0.9};
+  for (int i = 0; i < 10; ++i) {
+    Config c = RandomConfig(crng, gs[i % 5], i < 5 ? 1.0 : 0.4);
+    // Reference: Int dv Int du f, the inner integral in the camera step's angle variable
+    // (f / (dtheta/du) is bounded), split at the point lobe's peak; the outer over v, split
+    // at the closest point and refined towards it.
+    auto inner = [&](double v) {
+      SegmentQuery<double> q;
+      q.origin = c.xc;
+      q.dir = c.wc;
+      q.tmin = 0;
+      q.tmax = c.s;
+      q.g = c.g;
+      q.point = c.xl + v * c.wl;
+      q.lobe = {LobeKind::HenyeyGreenstein, c.wl, c.g};
+      AngleDomain<double> dom(q);
+      PhaseProduct<double> phase(q, dom);
+      std::vector<double> x = {0, dom.width()};
+      double pk = phase.point_peak();
+      if (pk > 0 && pk < dom.width()) x.push_back(pk);
+      return Pieces([&](double delta) {
+        double u = dom.t_at(delta);
+        return Integrand(c, u, v) / dom.dtheta_dt(u);
+      }, x, 1e-9);
+    };
+    VrlMarginal<double> md(Query<double>(c));
+    double reference = Pieces(inner, VBreaks(c, md), 1e-7);
+    REQUIRE(reference > 0);
+
+    VrlMarginal<Real> m(Query<Real>(c));
+    double sum = 0, sum2 = 0;
+    for (int k = 0; k < kSamples; ++k) {
+      Real v = m.sample(Real(U(rng)));
+      Real p1 = m.pdf(v);
+      SegmentQuery<Real> q;
+      q.origin = Cast<Real>(c.xc);
+      q.dir = Cast<Real>(c.wc);
+      q.tmin = 0;
+      q.tmax = Real(c.s);
+      q.g = Real(c.g);
+      q.point = Cast<Real>(c.xl) + v * Cast<Real>(c.wl);
+      q.lobe = {LobeKind::HenyeyGreenstein, Cast<Real>(c.wl), Real(c.g)};
+      q.sigma_t = Real(c.sigma_t);
+      FullProduct<Real> cam(q);
+      Real u = cam.sample(Real(U(rng)));
+      Real p2 = cam.pdf(u);
+      double f = Integrand(c, double(u), double(v));
+      double x = double(p1) * double(p2) > 0 ? f / (double(p1) * double(p2)) : 0;
+      sum += x;
+      sum2 += x * x;
+    }
+    double mean = sum / kSamples, var = std::max(sum2 / kSamples - mean * mean, 0.0);
+    double se = std::sqrt(var / kSamples);
+    INFO("g " << c.g << " sigma_t " << c.sigma_t << " mean " << mean << " reference " << reference << " se " << se
+              << " relative variance " << var / (reference * reference));
+    CHECK(std::abs(mean - reference) <= 4 * se + 1e-6 * reference);
+  }
+}
+
+TEMPLATE_TEST_CASE("VrlMarginal: degenerate and invalid input", "", float, double) {
+  using Real = TestType;
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  auto check_finite = [](const VrlMarginal<Real>& m, Real tmin, Real tmax, bool positive) {
+    REQUIRE(m.valid());
+    for (Real u : {Real(0), Real(1e-7), Real(0.25), Real(0.5), Real(0.999), Real(1)}) {
+      Real v = m.sample(u);
+      REQUIRE(std::isfinite(v));
+      REQUIRE(v >= tmin);
+      REQUIRE(v <= tmax);
+      Real p = m.pdf(v);
+      REQUIRE(std::isfinite(p));
+      REQUIRE(p >= 0);
+      if (positive) REQUIRE(p > 0);
+      Real x = m.invert(v);
+      REQUIRE(std::isfinite(x));
+      REQUIRE(x >= 0);
+      REQUIRE(x <= 1);
+    }
+    REQUIRE(m.pdf(tmax + 1) == 0);
+    REQUIRE(m.pdf(tmin - 1) == 0);
+  };
+  VrlMarginalQuery<Real> base;
+  base.origin = {0, 1, 0};
+  base.dir = {1, 0, 0};
+  base.tmin = 0;
+  base.tmax = 2;
+  base.camera_origin = {0, 0, 0};
+  base.camera_dir = {0, 0, 1};
+  base.camera_length = 3;
+  base.g = Real(0.7);
+  base.sigma_t = 1;
+  check_finite(VrlMarginal<Real>(base), 0, 2, true);
+
+  SECTION("parallel lines") {
+    auto q = base;
+    q.dir = {0, 0, 1};
+    check_finite(VrlMarginal<Real>(q), 0, 2, true);
+    q.origin = {0, 0, -1};  // on the camera line
+    check_finite(VrlMarginal<Real>(q), 0, 2, false);
+  }
+  SECTION("intersecting lines, the VRL through the camera segment") {
+    auto q = base;
+    q.origin = {-1, 0, 1};
+    check_finite(VrlMarginal<Real>(q), 0, 2, false);
+    q.g = Real(-0.99);
+    check_finite(VrlMarginal<Real>(q), 0, 2, false);
+    q.g = Real(0.99);
+    check_finite(VrlMarginal<Real>(q), 0, 2, false);
+  }
+  SECTION("zero-length VRL: tmin with pdf 0") {
+    auto q = base;
+    q.tmax = q.tmin = 1;
+    VrlMarginal<Real> m(q);
+    REQUIRE(m.valid());
+    REQUIRE(m.sample(Real(0.5)) == 1);
+    REQUIRE(m.pdf(1) == 0);
+    REQUIRE(m.invert(1) == 0);
+  }
+  SECTION("zero-length camera segment: VrlPoint's density") {
+    auto q = base;
+    q.camera_length = 0;
+    VrlMarginal<Real> m(q);
+    check_finite(m, 0, 2, true);
+    VrlPoint<Real> vp(q.vrl_point_query());
+    for (Real v : {Real(0.1), Real(1), Real(1.9)}) REQUIRE(m.pdf(v) == Approx(vp.pdf(v)).epsilon(1e-4));
+  }
+  SECTION("extreme extinction and far away") {
+    auto q = base;
+    q.sigma_t = Real(1e4);
+    check_finite(VrlMarginal<Real>(q), 0, 2, true);
+    q.sigma_t = 1;
+    q.origin = {0, Real(1e4), 0};
+    check_finite(VrlMarginal<Real>(q), 0, 2, true);
+    q.origin = {0, Real(1e-6), 0};
+    check_finite(VrlMarginal<Real>(q), 0, 2, true);
+  }
+  SECTION("invalid input: NaN samples, pdf 0") {
+    std::vector<VrlMarginalQuery<Real>> bad(8, base);
+    bad[0].origin.x = nan;
+    bad[1].dir = {1, 1, 0};
+    bad[2].tmax = -1;
+    bad[3].camera_length = -1;
+    bad[4].camera_length = std::numeric_limits<Real>::infinity();
+    bad[5].g = 1;
+    bad[6].sigma_t = -1;
+    bad[7].camera_dir = {0, 0, nan};
+    for (const auto& q : bad) {
+      VrlMarginal<Real> m(q);
+      REQUIRE_FALSE(m.valid());
+      REQUIRE(std::isnan(m.sample(Real(0.5))));
+      REQUIRE(std::isnan(m.invert(Real(0.5))));
+      REQUIRE(m.pdf(Real(0.5)) == 0);
+    }
+  }
+}
