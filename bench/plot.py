@@ -201,7 +201,11 @@ def main():
     L.append("At g = 0 Novák and both Cauchy samplers draw the equiangular distribution (their relative variances are "
              "equal), so among them only cost differs there; FullProduct also follows transmittance. "
              "FullProduct is vrlis's own sampler (Novák's construction over phases x transmittance, 16 nodes), "
-             "not one of the published ones.")
+             "not one of the published ones. "
+             "VrlMarginal (+M) is vrlis's own step one: VrlPoint's inverse-distance density times a piecewise-linear "
+             "correction over VrlPoint's CDF, fitted at 8 nodes to an estimate of the marginal Int f du (transmittance "
+             "along the VRL and to the camera segment's start times a 3-point rule, split at the point lobe's peak, of "
+             "FullProductTarget over the camera step's angle interval); it is not one of the published ones either.")
     L.append("")
     L.append("![speed against accuracy](figures/speed_accuracy.png)\n")
     L.append("![efficiency against g](figures/efficiency.png)\n")
