@@ -1,0 +1,154 @@
+#pragma once
+// The per-configuration checks shared by the segment-sampler and VRL-point tests.
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "integrand.hpp"
+#include "stats.hpp"
+
+namespace vrlis_test {
+
+template <typename Real>
+const char* RealName() { return std::is_same_v<Real, float> ? "float" : "double"; }
+
+template <typename S>
+std::string SamplerName() {
+  using Real = typename S::Real;
+  if constexpr (std::is_same_v<S, vrlis::Equiangular<Real>>) return "Equiangular";
+  else if constexpr (std::is_same_v<S, vrlis::Novak<Real>>) return "Novak";
+  else if constexpr (std::is_same_v<S, vrlis::CauchySum<Real>>) return "CauchySum";
+  else if constexpr (std::is_same_v<S, vrlis::CauchyMixture<Real>>) return "CauchyMixture";
+  else if constexpr (std::is_same_v<S, vrlis::FullProduct<Real>>) return "FullProduct";
+  else if constexpr (std::is_same_v<S, vrlis::VrlPoint<Real>>) return "VrlPoint";
+  else return "unknown";
+}
+
+template <typename S>
+std::string Label() { return SamplerName<S>() + "/" + RealName<typename S::Real>(); }
+
+// Whether sample() is the inverse of invert(): all but the mixture, which picks a component
+// first (see cauchy_mixture.hpp); its round trip is tested in distribution instead.
+template <typename S>
+constexpr bool RoundTripsPointwise() { return !std::is_same_v<S, vrlis::CauchyMixture<typename S::Real>>; }
+
+// Tolerances per Real type. Each is a bound on rounding, with headroom; the summary file
+// records the worst value actually seen so that they can be tightened.
+template <typename Real>
+struct Tolerance;
+template <>
+struct Tolerance<double> {
+  static constexpr double normalisation = 1e-8;  // |integral of pdf - 1|
+  static constexpr double round_trip = 1e-12;    // |invert(sample(u)) - u| floor, beside the rounding budget
+  static constexpr double derivative = 1e-6;     // relative, on top of the rounding term
+  static constexpr double fd_step = 1e-5;        // finite-difference step / local length scale
+  static constexpr double estimator_bias = 1e-9; // relative bias of f / pdf allowed for rounding
+  static constexpr double quadrature = 1e-11;    // relative tolerance for quadrature of the pdf
+};
+template <>
+struct Tolerance<float> {
+  static constexpr double normalisation = 1e-4;
+  static constexpr double round_trip = 1e-5;
+  static constexpr double derivative = 2e-3;
+  static constexpr double fd_step = 3e-3;
+  static constexpr double estimator_bias = 1e-4;
+  static constexpr double quadrature = 1e-7;  // a float pdf is noisy at 1e-7: asking for more only costs time
+};
+
+inline constexpr long kSamples = 20000;
+inline constexpr double kBinProbability = 1.0 / 50;  // ~50 bins, 400 expected counts each
+
+// Uniform numbers in [0, 1] for the sampler, from a fixed seed (no stratification).
+template <typename Real>
+std::vector<Real> UniformNumbers(std::uint64_t seed, long n) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uni(0, 1);
+  std::vector<Real> u(std::size_t(n), Real(0));
+  for (auto& x : u) x = Real(uni(rng));
+  return u;
+}
+
+// A chi-square test of samples (given in the coordinate x) against a density in x, bins
+// from quadrature of the density over a refined grid. `t_of_x` maps x to the sampler's own
+// variable, so that no bin is narrower than 64 ulps of Real there: Real cannot place a
+// sample more finely than that, and its pdf means nothing at smaller scales.
+template <typename Real, typename Density, typename TOfX>
+ChiSquare BinnedChiSquare(Density density_x, TOfX t_of_x, double a, double b, const std::vector<double>& features,
+                          const std::vector<double>& x_samples) {
+  std::vector<double> edges = RefinedGrid(a, b, features);
+  std::vector<double> cell_p = CellIntegrals(density_x, edges, std::max(1e-9, Tolerance<Real>::quadrature));
+  auto wide_enough = [&](double lo, double hi) {
+    double tl = t_of_x(lo), th = t_of_x(hi);
+    if (!std::isfinite(th) || !std::isfinite(tl)) return true;
+    return th - tl >= 64 * double(std::numeric_limits<Real>::epsilon()) * std::max(std::abs(tl), std::abs(th));
+  };
+  std::vector<double> bin_edges, bin_p;
+  MergeCells(edges, cell_p, kBinProbability, wide_enough, bin_edges, bin_p);
+  return PearsonTest(Histogram(x_samples, bin_edges), bin_p, long(x_samples.size()));
+}
+
+// A chi-square test that values in [0, 1] are uniform, on 20 equal bins.
+inline ChiSquare UniformityChiSquare(const std::vector<double>& v) {
+  std::vector<double> edges(21), p(20, 1.0 / 20);
+  for (int i = 0; i <= 20; ++i) edges[std::size_t(i)] = i / 20.0;
+  return PearsonTest(Histogram(v, edges), p, long(v.size()));
+}
+
+struct DerivativeCheck {
+  int checked = 0, skipped = 0, failed = 0;
+  double worst_relative = 0;   // |finite difference - pdf| / pdf
+  double worst_over_tol = 0;   // the same error over the allowed error (<= 1 passes)
+  std::string worst_note;
+};
+
+// pdf(t) against the derivative of invert at the points ts. The central difference of the
+// CDF over [lo, hi] is exactly the mean of the pdf there, which Simpson's rule gives to
+// O(step^4); where Simpson and the trapezoid disagree the pdf is too curved (or kinked, as
+// Novak's is at its nodes) at this step, so the step is shrunk, and the point skipped (and
+// counted) if even the smallest step does not resolve it. Allowed error: relative tolerance
+// plus the CDF's rounding (a few ulps) over the step.
+//
+// The rounding term: invert(t) computes with t and with the query's coordinates, so it is
+// F(t + e) for an e of a few ulps of the magnitudes involved (`magnitude`), plus a few ulps
+// of u; over a step of width w that is (eps + pdf eps magnitude) / w.
+template <typename S>
+DerivativeCheck CheckDerivative(const S& s, double u0, double scale_h, double tmin, double tmax,
+                                const std::vector<double>& ts, double magnitude) {
+  using Real = typename S::Real;
+  const double eps = std::numeric_limits<Real>::epsilon();
+  const double rel_tol = Tolerance<Real>::derivative;
+  DerivativeCheck r;
+  for (double t : ts) {
+    bool done = false;
+    for (double shrink : {1.0, 0.25, 0.0625, 0.015625}) {
+      double hs = Tolerance<Real>::fd_step * shrink * (scale_h + std::abs(t - u0));
+      Real lo = Real(t - hs), hi = Real(t + hs);
+      if (!(double(lo) >= tmin && double(hi) <= tmax && hi > lo)) continue;
+      Real mid = Real((double(lo) + double(hi)) / 2);
+      double plo = s.pdf(lo), pmid = s.pdf(mid), phi = s.pdf(hi);
+      double simpson = (plo + 4 * pmid + phi) / 6, trapezoid = (plo + phi) / 2;
+      // Simpson's error is about (S - T)^2 / S for the smooth bumps met here (Cauchy-like).
+      if (!(Square((simpson - trapezoid) / simpson) <= 0.1 * rel_tol)) continue;
+      double width = double(hi) - double(lo);
+      double fd = (double(s.invert(hi)) - double(s.invert(lo))) / width;
+      double err = std::abs(fd - simpson);
+      double allowed = rel_tol * simpson + 8 * eps * (1 + simpson * (magnitude + std::abs(t))) / width;
+      ++r.checked;
+      if (!(err <= allowed)) ++r.failed;
+      if (err / simpson > r.worst_relative) r.worst_relative = err / simpson;
+      if (!(err / allowed <= r.worst_over_tol)) {
+        r.worst_over_tol = err / allowed;
+        r.worst_note = "t=" + std::to_string(t) + " pdf=" + std::to_string(simpson) + " fd=" + std::to_string(fd);
+      }
+      done = true;
+      break;
+    }
+    if (!done) ++r.skipped;
+  }
+  return r;
+}
+
+}  // namespace vrlis_test
