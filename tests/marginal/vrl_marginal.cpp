@@ -103,10 +103,10 @@ double ClosestV(const Config& c) {
 
 // Breakpoints in v: the fit's nodes (kinks), the closest point and a geometric refinement
 // towards it (VrlPoint's inverse-distance peak).
-template <typename Real>
-std::vector<double> VBreaks(const Config& c, const VrlMarginal<Real>& m) {
+template <typename M>
+std::vector<double> VBreaks(const Config& c, const M& m) {
   std::vector<double> x = {0, c.t};
-  for (int j = 0; j < VrlMarginal<Real>::kNodeCount; ++j) x.push_back(double(m.vrl_point().sample(VrlMarginal<Real>::node(j))));
+  for (int j = 0; j < m.count(); ++j) x.push_back(double(m.vrl_point().sample(m.fitted_node(j))));
   double v0 = ClosestV(c);
   if (std::isfinite(v0))
     for (int k = 1; k <= 30; k += 2)
@@ -137,8 +137,7 @@ TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", 
   const double tol_norm = std::is_same_v<Real, float> ? 2e-3 : 1e-7;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> U(0, 1);
-  for (const Config& c : Configs<Real>(64, 11)) {
-    VrlMarginal<Real> m(Query<Real>(c));
+  auto check = [&](const Config& c, const auto& m) {
     REQUIRE(m.valid());
     double norm = Pieces([&](double v) { return double(m.pdf(Real(v))); }, VBreaks(c, m), 1e-9, kDepth<Real>);
     INFO("g " << c.g << " sigma_t " << c.sigma_t);
@@ -155,6 +154,12 @@ TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", 
       worst = std::max(worst, std::abs(double(m.invert(v)) - u));
     }
     CHECK(worst < tol_round);
+  };
+  const auto configs = Configs<Real>(64, 11);
+  for (size_t i = 0; i < configs.size(); ++i) {
+    check(configs[i], VrlMarginal<Real>(Query<Real>(configs[i])));
+    // Every fourth configuration also with the optional node at the closest point.
+    if (i % 4 == 0) check(configs[i], VrlMarginal<Real, 8, 2, true, true>(Query<Real>(configs[i])));
   }
 }
 
