@@ -55,7 +55,7 @@ struct Tolerance<float> {
   static constexpr double derivative = 2e-3;
   static constexpr double fd_step = 3e-3;
   static constexpr double estimator_bias = 1e-4;
-  static constexpr double quadrature = 1e-7;  // a float pdf is noisy at 1e-7: asking for more only costs time
+  static constexpr double quadrature = 1e-6;  // a float pdf is noisy at 1e-7: asking for more only costs time
 };
 
 inline constexpr long kSamples = 20000;

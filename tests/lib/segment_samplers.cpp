@@ -83,13 +83,17 @@ void CheckSegmentSampler(const Config& wanted, std::uint64_t seed) {
     if (!(std::isfinite(te) && te >= Real(c.tmin) && te <= Real(c.tmax))) ++out_of_range;
     if (!(std::isfinite(s.pdf(te)) && std::isfinite(s.invert(te)))) ++bad_pdf;
   }
-  // sample is nondecreasing in u (an inverse CDF is; the mixture's is per component).
+  // sample is nondecreasing in u (an inverse CDF is; the mixture's is per component), up
+  // to reversals of a few ulps of the magnitudes t is computed from (rounding in t_at).
   long not_increasing = 0;
   if constexpr (RoundTripsPointwise<S>()) {
     std::vector<Real> sorted = u;
     std::sort(sorted.begin(), sorted.end());
-    for (std::size_t i = 1; i < sorted.size(); ++i)
-      if (s.sample(sorted[i]) < s.sample(sorted[i - 1])) ++not_increasing;
+    const double slack = 4 * eps * (std::abs(c.tmin) + std::abs(m.u0) + m.h);
+    for (std::size_t i = 1; i < sorted.size(); ++i) {
+      double a = s.sample(sorted[i - 1]), b = s.sample(sorted[i]);
+      if (b < a - slack - 4 * eps * std::abs(a)) ++not_increasing;
+    }
   }
   CHECK(not_increasing == 0);
   CHECK(out_of_range == 0);
@@ -171,7 +175,7 @@ void CheckSegmentSampler(const Config& wanted, std::uint64_t seed) {
   const double second = Sum(CellIntegrals(f2p_theta, edges, 1e-6));
   const double variance = std::max(ratio.Variance(), second - integral * integral);
   const double se = std::sqrt(variance / double(ratio.n));
-  const double z = std::abs(ratio.mean - integral) / se;
+  const double z = se > 0 ? std::abs(ratio.mean - integral) / se : 0.0;  // se = 0: f / pdf is constant
   summary.Max(label, "estimator_z", z, Where(c));
   INFO("mean f/pdf " << ratio.mean << " quadrature " << integral << " standard error " << se << " z " << z);
   CHECK(std::abs(ratio.mean - integral) <= 4 * se + Tolerance<Real>::estimator_bias * integral);

@@ -31,8 +31,8 @@ double Integrate(F f, double a, double b, double tol = 1e-12, unsigned depth = 3
 // every feature and both ends (spikes of Henyey-Greenstein lobes with |g| -> 1 and of the
 // Cauchy fits sit exactly there), so that every cell is smooth enough for Gauss-Kronrod
 // and fine enough for chi-square bins to resolve a spike's shape.
-inline std::vector<double> RefinedGrid(double a, double b, std::vector<double> features, int uniform_cells = 128,
-                                       int levels = 26) {
+inline std::vector<double> RefinedGrid(double a, double b, std::vector<double> features, int uniform_cells = 96,
+                                       int levels = 24) {
   std::vector<double> x;
   double w = b - a;
   for (int i = 0; i <= uniform_cells; ++i) x.push_back(a + w * i / uniform_cells);
@@ -41,7 +41,7 @@ inline std::vector<double> RefinedGrid(double a, double b, std::vector<double> f
   for (double f : features) {
     x.push_back(f);
     for (int k = 1; k <= levels; ++k)
-      for (double sub : {1.0, 1.25, 1.5, 1.75}) {  // four cells per octave: a spike's shape, not just its mass
+      for (double sub : {1.0, 1.5}) {  // two cells per octave: a spike's shape, not just its mass
         double d = sub * w * std::ldexp(1.0, -k);
         x.push_back(f - d);
         x.push_back(f + d);
@@ -74,7 +74,7 @@ double AdaptiveGaussKronrod(F& f, double a, double b, double abs_tol, unsigned d
 // it would bisect to the bottom chasing digits below the noise.) The depth is capped
 // because the grid already resolves the features.
 template <typename F>
-std::vector<double> CellIntegrals(F f, const std::vector<double>& edges, double tol = 1e-11, unsigned depth = 8) {
+std::vector<double> CellIntegrals(F f, const std::vector<double>& edges, double tol = 1e-11, unsigned depth = 6) {
   std::size_t cells = edges.size() - 1;
   std::vector<double> estimate(cells), error(cells);
   double total = 0;
@@ -82,7 +82,7 @@ std::vector<double> CellIntegrals(F f, const std::vector<double>& edges, double 
     estimate[i] = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, edges[i], edges[i + 1], 0, 0, &error[i]);
     total += std::abs(estimate[i]);
   }
-  double abs_tol = tol * total / double(cells);
+  double abs_tol = tol * total / std::sqrt(double(cells));  // cell errors are not all of one sign
   for (std::size_t i = 0; i < cells; ++i)
     estimate[i] = AdaptiveGaussKronrod(f, edges[i], edges[i + 1], abs_tol, depth, estimate[i], error[i]);
   return estimate;
