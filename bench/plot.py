@@ -154,7 +154,7 @@ def main():
 
     vm = [times.get(f"VrlMarginal/step/{gkey(g)}") for g in gs]
     if all(vm):
-        L.append(f"VrlMarginal alone (fit + sample + pdf, 8 nodes x 3-point rule): {geomean(vm):.0f} ns "
+        L.append(f"VrlMarginal alone (fit + sample + pdf; 8 nodes, each a 2-point rule on 1-5 pieces cut at the lobes' peaks): {geomean(vm):.0f} ns "
                  f"(range over g {min(vm):.0f}-{max(vm):.0f}); the estimator with it as step one is timed as "
                  f"EstimatorMarginal/<camera sampler>.")
         L.append("")
@@ -204,8 +204,10 @@ def main():
              "not one of the published ones. "
              "VrlMarginal (+M) is vrlis's own step one: VrlPoint's inverse-distance density times a piecewise-linear "
              "correction over VrlPoint's CDF, fitted at 8 nodes to an estimate of the marginal Int f du (transmittance "
-             "along the VRL and to the camera segment's start times a 3-point rule, split at the point lobe's peak, of "
-             "FullProductTarget over the camera step's angle interval); it is not one of the published ones either.")
+             "along the VRL and to the camera segment's start times a 2-point Gauss rule of FullProductTarget over the "
+             "camera step's angle interval, cut into pieces at both lobes' peaks); it is not one of the published ones "
+             "either. Its relative variance is the whole estimator's with the same camera samplers, by the same "
+             "quadrature (outer variable: VrlPoint's CDF, broken at VrlMarginal's nodes).")
     L.append("")
     L.append("![speed against accuracy](figures/speed_accuracy.png)\n")
     L.append("![efficiency against g](figures/efficiency.png)\n")
