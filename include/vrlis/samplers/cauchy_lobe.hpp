@@ -7,6 +7,7 @@
 // Working with z keeps the truncated mass exact for tiny gamma and peaks near an end.
 #include <array>
 #include <limits>
+#include <type_traits>
 
 #include "../angle/phase_product.hpp"
 
@@ -25,9 +26,13 @@ class TruncatedCauchy {
   // Its integral over [0, delta]: arg z(delta), z = Re(delta) + i delta.
   Real primitive(Real delta) const { return Atan2(delta, Re(delta)); }
   // The delta whose primitive is s, for s in [0, mass()]: delta cos s = Re(delta) sin s.
+  // Solved in double for float: next to a narrow peak the denominator cancels, and a float
+  // solve would reverse neighbouring samples.
   Real inverse_primitive(Real s) const {
-    Real sn = std::sin(s), denom = std::cos(s) + location_ / scale_ * sn;
-    return denom > 0 ? Clamp(Re(0) * sn / denom, Real(0), width_) : width_;
+    using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
+    W sn = std::sin(W(s)), denom = std::cos(W(s)) + W(location_) / scale_ * sn;
+    W re0 = W(scale_) + W(location_) * (W(location_) / scale_);
+    return denom > 0 ? Clamp(Real(re0 * sn / denom), Real(0), width_) : width_;
   }
   Real mass() const { return mass_; }
   Real location() const { return location_; }

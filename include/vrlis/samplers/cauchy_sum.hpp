@@ -1,11 +1,12 @@
 #pragma once
 // The seed's solution 1: p(theta) proportional to C1(theta) + C2(theta), normalised jointly.
 //
-// The CDF is a sum of two arctangents, i.e. the argument of z1(delta) z2(delta) (see
-// cauchy_lobe.hpp). Setting that argument to S = u (mass1 + mass2)
-// gives Im(z1 z2 e^{-iS}) = 0, a quadratic in delta. Of its two roots the wanted one is
-// where the argument crosses S increasing, i.e. where the quadratic's slope is +sqrt(disc).
+// The CDF is a sum of two arctangents; the sum of two arctangents is the argument of a
+// product of two complex numbers, so F(delta) = u is a quadratic in delta. Of its two roots
+// the wanted one is where the argument crosses its target increasing, i.e. where the
+// quadratic's slope is +sqrt(disc).
 #include <algorithm>
+#include <type_traits>
 
 #include "../angle/segment_sampler.hpp"
 #include "cauchy_lobe.hpp"
@@ -44,25 +45,35 @@ class CauchySumAngle {
   }
 
  private:
-  // With w_k = gamma_k z_k = (P_k - mu_k delta) + i gamma_k delta, P_k = gamma_k^2 + mu_k^2
-  // (scaling by gamma_k > 0 keeps the argument), Im(w1 w2 e^{-iS}) = a delta^2 + b delta + c
-  // has coefficients of order one even when gamma_k is tiny.
+  // Expanded about a point c (x = delta - c, e_k = c - mu_k), each primitive's increase is
+  // arg z_k with z_k = (P_k + e_k x) + i gamma_k x, P_k = gamma_k^2 + e_k^2, so
+  // F(delta) = s becomes Im(z1 z2 e^{-iK}) = a x^2 + b x + c0 = 0 with K = s - F(c).
+  // c is the narrower peak if it lies inside the interval (coefficients of the size of its
+  // scale: a narrow lobe far from theta_a keeps its digits) and otherwise the nearer end
+  // (F(c) is then exactly 0 or the whole mass: a tiny interval keeps its digits).
+  // In float the root is solved in double: K is monotone in u, but a float solve of an
+  // ill-conditioned quadratic is not, and where the density is low its errors reverse samples.
   Real SampleQuadratic(Real s) const {
+    using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
     const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
-    Real m1 = c1.location(), m2 = c2.location(), g1 = c1.scale(), g2 = c2.scale();
-    Real p1 = g1 * c1.Re(0), p2 = g2 * c2.Re(0);
-    Real sn = std::sin(s), cs = std::cos(s);
-    Real a = -(g1 * m2 + g2 * m1) * cs - (m1 * m2 - g1 * g2) * sn;
-    Real b = (g1 * p2 + g2 * p1) * cs + (p1 * m2 + p2 * m1) * sn;
-    Real c = -p1 * p2 * sn;
-    Real norm = std::max({std::abs(a), std::abs(b), std::abs(c)});  // keep b^2 - 4ac finite
+    Real c = Clamp((c1.scale() < c2.scale() ? c1 : c2).location(), Real(0), width_);
+    W k = c == 0 ? W(s) : c == width_ ? W(s) - W(mass_) : W(s) - (W(c1.primitive(c)) + W(c2.primitive(c)));
+    W e1 = W(c) - c1.location(), e2 = W(c) - c2.location(), g1 = c1.scale(), g2 = c2.scale();
+    W p1 = g1 * g1 + e1 * e1, p2 = g2 * g2 + e2 * e2;
+    W sn = std::sin(k), cs = std::cos(k);
+    W a = (g2 * e1 + g1 * e2) * cs - (e1 * e2 - g1 * g2) * sn;
+    W b = (g2 * p1 + g1 * p2) * cs - (p1 * e2 + p2 * e1) * sn;
+    W c0 = -p1 * p2 * sn;
+    W norm = std::max({std::abs(a), std::abs(b), std::abs(c0)});  // keep b^2 - 4ac finite
     a /= norm;
     b /= norm;
-    c /= norm;
-    Real root = SafeSqrt(b * b - 4 * a * c);
-    // (-b + root) / (2a), in whichever form does not cancel.
-    Real delta = b > 0 ? -2 * c / (b + root) : (-b + root) / (2 * a);
-    return delta >= 0 ? std::min(delta, width_) : Real(0);  // also maps NaN from a == 0 to 0
+    c0 /= norm;
+    W root = SafeSqrt(b * b - 4 * a * c0);
+    // The root where the argument crosses K increasing, (-b + root) / (2a), in whichever
+    // form does not cancel.
+    W x = b > 0 ? -2 * c0 / (b + root) : (-b + root) / (2 * a);
+    Real delta = Real(c + x);
+    return delta >= 0 ? std::min(delta, width_) : Real(0);  // also maps NaN to 0
   }
 
   CauchyLobes<Real> fit_;

@@ -46,6 +46,12 @@ class VrlPoint {
     h = std::max(h, NoiseFloor(Length(d) + std::abs(tmin_) + std::abs(tmax_)));
     Real v0 = (along - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) / Sqr(sin_a);
     k_ = sin_a / h;
+    // The density varies by at most k L / 2 over the VRL: below epsilon it is uniform, and
+    // the asinh difference of a subnormal k L would have no digits left.
+    if (!(k_ * (tmax_ - tmin_) > std::numeric_limits<Real>::epsilon())) {
+      k_ = 0;
+      return;
+    }
     xa_ = k_ * (tmin_ - v0);
     total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
     if (!(total_ > 0) || !std::isfinite(total_)) k_ = 0;  // uniform to the last digit
