@@ -113,7 +113,26 @@ def main():
         lines += ["## Summary", "", f.read()]
     with open(os.path.join(args.publish, "README.md"), "w") as f:
         f.write("\n".join(lines))
+    update_readme(lines[2], os.path.join(args.out, "summary.md"))
     return 0
+
+
+def update_readme(provenance, summary_path, readme="README.md"):
+    """Replaces the block between the compare-summary markers of the project README with the
+    summary table just measured, so the README never quotes a table no command made."""
+    begin, end = "<!-- compare-summary -->", "<!-- /compare-summary -->"
+    if not os.path.exists(readme):
+        return
+    with open(readme) as f:
+        text = f.read()
+    if begin not in text or end not in text:
+        return
+    with open(summary_path) as f:
+        table = f.read()
+    block = f"{begin}\n{provenance}\n\n{table}{end}"
+    text = text[: text.index(begin)] + block + text[text.index(end) + len(end):]
+    with open(readme, "w") as f:
+        f.write(text)
 
 
 if __name__ == "__main__":
