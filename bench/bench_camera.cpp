@@ -19,18 +19,10 @@ void Camera(benchmark::State& state, double g) {
   state.SetItemsProcessed(state.iterations());
 }
 
-template <typename... S>
-void RegisterAll(std::tuple<S...>*) {
-  int k = 0;
-  ((void)[&] {
-     const char* name = kCameraSamplerNames[k++];
-     for (double g : kStudyG)
-       benchmark::RegisterBenchmark(BenchName("Camera", name, g).c_str(), [g](benchmark::State& s) { Camera<S>(s, g); });
-   }(), ...);
-}
-
 }  // namespace
 
-void RegisterCamera() { RegisterAll(static_cast<CameraSamplers<float>*>(nullptr)); }
+void RegisterCamera() {
+  RegisterPerSampler("Camera", [](auto tag, benchmark::State& s, double g) { Camera<typename decltype(tag)::type>(s, g); });
+}
 
 }  // namespace vrlis::bench

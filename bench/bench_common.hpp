@@ -11,6 +11,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "study/integrand.hpp"
@@ -35,7 +37,23 @@ inline std::string BenchName(const char* kind, const char* sampler, double g) {
   return buf;
 }
 
-// Registers kind/<Sampler>/g:<g> for every camera sampler and every g of the study.
+// Registers kind/<Sampler>/g:<g> for every camera sampler and every g of the study;
+// run(tag, state, g) times sampler type decltype(tag)::type.
+template <typename Run, typename... S>
+void RegisterPerSampler(const char* kind, Run run, std::tuple<S...>*) {
+  int k = 0;
+  ((void)[&] {
+     const char* name = kCameraSamplerNames[k++];
+     for (double g : kStudyG)
+       benchmark::RegisterBenchmark(BenchName(kind, name, g).c_str(),
+                                    [run, g](benchmark::State& state) { run(std::common_type<S>{}, state, g); });
+   }(), ...);
+}
+template <typename Run>
+void RegisterPerSampler(const char* kind, Run run) {
+  RegisterPerSampler(kind, run, static_cast<CameraSamplers<float>*>(nullptr));
+}
+
 void RegisterCamera();
 void RegisterFit();
 void RegisterEstimator();

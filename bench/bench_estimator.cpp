@@ -31,22 +31,15 @@ void Estimator(benchmark::State& state, double g) {
   state.SetItemsProcessed(state.iterations());
 }
 
-template <typename... S>
-void RegisterAll(std::tuple<S...>*) {
-  int k = 0;
-  ((void)[&] {
-     const char* name = kCameraSamplerNames[k++];
-     for (double g : kStudyG)
-       benchmark::RegisterBenchmark(BenchName("Estimator", name, g).c_str(),
-                                    [g](benchmark::State& s) { Estimator<S, VrlPoint<float>>(s, g); });
-     for (double g : kStudyG)
-       benchmark::RegisterBenchmark(BenchName("EstimatorMarginal", name, g).c_str(),
-                                    [g](benchmark::State& s) { Estimator<S, VrlMarginal<float>>(s, g); });
-   }(), ...);
-}
-
 }  // namespace
 
-void RegisterEstimator() { RegisterAll(static_cast<CameraSamplers<float>*>(nullptr)); }
+void RegisterEstimator() {
+  RegisterPerSampler("Estimator", [](auto tag, benchmark::State& s, double g) {
+    Estimator<typename decltype(tag)::type, VrlPoint<float>>(s, g);
+  });
+  RegisterPerSampler("EstimatorMarginal", [](auto tag, benchmark::State& s, double g) {
+    Estimator<typename decltype(tag)::type, VrlMarginal<float>>(s, g);
+  });
+}
 
 }  // namespace vrlis::bench

@@ -16,18 +16,10 @@ void Fit(benchmark::State& state, double g) {
   state.SetItemsProcessed(state.iterations());
 }
 
-template <typename... S>
-void RegisterAll(std::tuple<S...>*) {
-  int k = 0;
-  ((void)[&] {
-     const char* name = kCameraSamplerNames[k++];
-     for (double g : kStudyG)
-       benchmark::RegisterBenchmark(BenchName("Fit", name, g).c_str(), [g](benchmark::State& s) { Fit<S>(s, g); });
-   }(), ...);
-}
-
 }  // namespace
 
-void RegisterFit() { RegisterAll(static_cast<CameraSamplers<float>*>(nullptr)); }
+void RegisterFit() {
+  RegisterPerSampler("Fit", [](auto tag, benchmark::State& s, double g) { Fit<typename decltype(tag)::type>(s, g); });
+}
 
 }  // namespace vrlis::bench
