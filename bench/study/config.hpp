@@ -103,16 +103,7 @@ Vec3<Real> VrlPointAt(const Pair<Real>& p, Real v) { return p.xl + v * p.wl; }
 // Step two: the camera segment seen from the VRL point y, with the VRL's lobe at y.
 template <typename Real>
 SegmentQuery<Real> CameraQuery(const Pair<Real>& p, Vec3<Real> y) {
-  SegmentQuery<Real> q;
-  q.origin = p.xc;
-  q.dir = p.wc;
-  q.tmin = 0;
-  q.tmax = p.s;
-  q.g = p.g;
-  q.point = y;
-  q.lobe = {LobeKind::HenyeyGreenstein, p.wl, p.g};
-  q.sigma_t = p.sigma_t;
-  return q;
+  return MediumToMediumQuery(p.xc, p.wc, Real(0), p.s, y, p.wl, p.g, p.sigma_t);
 }
 
 }  // namespace vrlis::study

@@ -19,16 +19,8 @@ template <typename Real>
 SegmentQuery<Real> MediumQuery(const glm::vec<3, Real>& origin, const glm::vec<3, Real>& dir, Real tmin, Real tmax,
                                const glm::vec<3, Real>& vrl_point, const glm::vec<3, Real>& vrl_dir, Real g,
                                Real sigma_t = 0) {
-  SegmentQuery<Real> q;
-  q.origin = FromGlm(origin);
-  q.dir = FromGlm(glm::normalize(dir));
-  q.tmin = tmin;
-  q.tmax = tmax;
-  q.g = g;
-  q.point = FromGlm(vrl_point);
-  q.lobe = {LobeKind::HenyeyGreenstein, FromGlm(glm::normalize(vrl_dir)), g};
-  q.sigma_t = sigma_t;
-  return q;
+  return MediumToMediumQuery(FromGlm(origin), FromGlm(glm::normalize(dir)), tmin, tmax, FromGlm(vrl_point),
+                             FromGlm(glm::normalize(vrl_dir)), g, sigma_t);
 }
 
 // Medium to surface: the VRL origin + t dir, t in [tmin, tmax], seen from a diffuse surface

@@ -29,15 +29,8 @@ Spectrum GatherMediumToMedium(vrlis::Method method, const Scene& scene, const Ca
   if (!(pv > 0) || !std::isfinite(pv)) return {};
   Vec3f y = vrl.origin + v * vrl.dir;
   // Step two: a point on the camera segment, seen from y.
-  vrlis::SegmentQuery<float> q;
-  q.origin = seg.ray.o;
-  q.dir = seg.ray.d;
-  q.tmin = seg.iv.a;
-  q.tmax = seg.iv.b;
-  q.g = m.g;
-  q.point = y;
-  q.lobe = {vrlis::LobeKind::HenyeyGreenstein, vrl.dir, m.g};
-  q.sigma_t = m.SigmaT();
+  vrlis::SegmentQuery<float> q =
+      vrlis::MediumToMediumQuery(seg.ray.o, seg.ray.d, seg.iv.a, seg.iv.b, y, vrl.dir, m.g, m.SigmaT());
   Sample s = SampleSegment(method, q, rng.Uniform());
   if (!Usable(s)) return {};
   Vec3f x = seg.ray(s.t), w = y - x;

@@ -35,6 +35,23 @@ struct SegmentQuery {
   Real sigma_t = 0;  // homogeneous extinction, for samplers that model transmittance
 };
 
+// Medium to medium: the camera segment origin + t dir, t in [tmin, tmax], gathering from
+// the point vrl_point of a VRL travelling along vrl_dir; both scatter with HG(g).
+template <typename Real>
+SegmentQuery<Real> MediumToMediumQuery(Vec3<Real> origin, Vec3<Real> dir, Real tmin, Real tmax, Vec3<Real> vrl_point,
+                                       Vec3<Real> vrl_dir, Real g, Real sigma_t) {
+  SegmentQuery<Real> q;
+  q.origin = origin;
+  q.dir = dir;
+  q.tmin = tmin;
+  q.tmax = tmax;
+  q.g = g;
+  q.point = vrl_point;
+  q.lobe = {LobeKind::HenyeyGreenstein, vrl_dir, g};
+  q.sigma_t = sigma_t;
+  return q;
+}
+
 enum class QueryError {
   None,
   NonFinite,          // a NaN or infinity where a finite number is required

@@ -132,14 +132,8 @@ class VrlMarginal {
     const Real xs[3] = {kRule == 1 ? Real(0.5) : kRule == 2 ? x2 : x3, kRule == 2 ? 1 - x2 : Real(0.5), 1 - x3};
     const Real ws[3] = {kRule == 1 ? Real(1) : kRule == 2 ? Real(0.5) : Real(5) / 18,
                         kRule == 2 ? Real(0.5) : Real(8) / 18, Real(5) / 18};
-    SegmentQuery<Real> sq;
-    sq.origin = q.camera_origin;
-    sq.dir = q.camera_dir;
-    sq.tmin = 0;
-    sq.tmax = q.camera_length;
-    sq.g = q.g;
-    sq.lobe = {LobeKind::HenyeyGreenstein, q.dir, q.g};
-    sq.sigma_t = q.sigma_t;
+    SegmentQuery<Real> sq = MediumToMediumQuery(q.camera_origin, q.camera_dir, Real(0), q.camera_length, q.origin,
+                                                q.dir, q.g, q.sigma_t);
     std::array<Real, kMax> depth;
     for (int j = 0; j < count_; ++j) {
       Real v = vp_.sample(xi_[j]);
