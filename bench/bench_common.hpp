@@ -51,7 +51,7 @@ void RegisterPerSampler(const char* kind, Run run, std::tuple<S...>*) {
 }
 template <typename Run>
 void RegisterPerSampler(const char* kind, Run run) {
-  RegisterPerSampler(kind, run, static_cast<CameraSamplers<float>*>(nullptr));
+  RegisterPerSampler(kind, run, static_cast<SamplerTuple<float>*>(nullptr));
 }
 
 void RegisterCamera();

@@ -68,7 +68,7 @@ std::string SummaryTable(const std::vector<StudyResult>& results) {
   for (const auto& r : results) {
     double novak = 0, best = 1e300;
     for (const auto& m : r.methods) {
-      if (m.method == vrlis::Method::Novak) novak = m.rmse_at_budget;
+      if (m.method == vrlis::CameraSamplers::Of<vrlis::NovakEntry>()) novak = m.rmse_at_budget;
       best = std::min(best, m.rmse_at_budget);
     }
     for (const auto& m : r.methods) {

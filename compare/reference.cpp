@@ -65,7 +65,7 @@ void Store(const std::filesystem::path& base, const std::string& key, const Refe
 
 }  // namespace
 
-Reference GetReference(vrli::Renderer& renderer, vrlis::Method method, double seconds, const std::string& dir,
+Reference GetReference(vrli::Renderer& renderer, double seconds, const std::string& dir,
                        const std::string& name, const std::string& key, int width, int height) {
   std::filesystem::create_directories(dir);
   std::filesystem::path base = std::filesystem::path(dir) / name;
@@ -77,7 +77,7 @@ Reference GetReference(vrli::Renderer& renderer, vrlis::Method method, double se
   double elapsed = 0;
   while (elapsed < seconds || stats.passes() < 2) {
     vrli::PassStats pass_stats;
-    stats.Add(renderer.RenderPass(method, seed, static_cast<std::uint64_t>(stats.passes()), &pass_stats));
+    stats.Add(renderer.RenderPass(seed, static_cast<std::uint64_t>(stats.passes()), &pass_stats));
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   Reference r{stats.Mean(), stats.VarianceOfMean(), stats.passes(), elapsed, false};

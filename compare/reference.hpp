@@ -15,9 +15,9 @@ struct Reference {
   bool from_cache = false;
 };
 
-// Renders `seconds` of passes with `method` (or loads them from `dir` when a cached render
+// Renders `seconds` of passes with `renderer` (or loads them from `dir` when a cached render
 // has exactly the settings described by `key`).
-Reference GetReference(vrli::Renderer& renderer, vrlis::Method method, double seconds, const std::string& dir,
+Reference GetReference(vrli::Renderer& renderer, double seconds, const std::string& dir,
                        const std::string& name, const std::string& key, int width, int height);
 
 }  // namespace vrl_compare

@@ -63,11 +63,17 @@ StudyResult RunStudy(const StudyConfig& config) {
   settings.height = config.height;
   settings.vrls_per_pass = config.vrls;
   settings.transport = built->transport;
-  vrli::VrlRenderer renderer(built->scene, settings);
+  // One renderer per camera sampler: the sampling method is part of the render settings.
+  auto renderer_for = [&](vrlis::Method m) {
+    vrli::RenderSettings s = settings;
+    s.transport.sampling = {m, {}};
+    return vrli::VrlRenderer(built->scene, s);
+  };
+  vrli::VrlRenderer reference_renderer = renderer_for(config.reference_method);
 
   std::ostringstream name;
   name << config.scene << "_g" << config.g;
-  Reference reference = GetReference(renderer, config.reference_method, config.reference_seconds, config.reference_dir,
+  Reference reference = GetReference(reference_renderer, config.reference_seconds, config.reference_dir,
                                      name.str(), ReferenceKey(config, settings.transport), config.width, config.height);
 
   std::vector<Runner> runners;
@@ -83,7 +89,7 @@ StudyResult RunStudy(const StudyConfig& config) {
     if (next->seconds >= config.budget) break;
     vrli::PassStats pass_stats;
     auto start = std::chrono::steady_clock::now();
-    vrli::Film pass = renderer.RenderPass(next->method, next->seed, static_cast<std::uint64_t>(next->stats.passes()), &pass_stats);
+    vrli::Film pass = renderer_for(next->method).RenderPass(next->seed, static_cast<std::uint64_t>(next->stats.passes()), &pass_stats);
     next->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     next->stats.Add(pass);
     next->result.curve.push_back({next->seconds, next->stats.passes(),

@@ -17,7 +17,7 @@ struct StudyConfig {
   int vrls = 32;                 // light paths per pass
   double budget = 5;             // seconds per method
   double reference_seconds = 30;
-  vrlis::Method reference_method = vrlis::Method::FullProduct;
+  vrlis::Method reference_method = vrlis::CameraSamplers::Of<vrlis::FullProductEntry>();
   std::vector<vrlis::Method> methods;
   std::uint64_t seed = 1;
   std::string out_dir;           // this study's folder

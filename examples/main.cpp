@@ -35,6 +35,8 @@ std::string JoinNames() {
 std::string SamplerNames() {
   std::string s;
   for (auto m : vrlis::kMethods) s += (s.empty() ? "" : ", ") + std::string(vrlis::Name(m));
+  s += ", each optionally followed by";
+  for (auto m : vrlis::kStepOnes) s += " +" + std::string(vrlis::Name(m));
   return s;
 }
 
@@ -104,7 +106,7 @@ int main(int argc, char** argv) {
   }
 
   // Validate everything before any work or output.
-  auto method = vrlis::ParseMethod(sampler);
+  auto method = vrlis::ParseGatherMethod(sampler);
   if (!method) return Fail("unknown sampler '" + sampler + "' (expected " + SamplerNames() + ")");
   if (integrator != "vrl" && integrator != "path") return Fail("unknown integrator '" + integrator + "' (expected vrl or path)");
   if (gather != "all" && gather != "m2m" && gather != "m2s") return Fail("unknown gather '" + gather + "' (expected all, m2m or m2s)");
@@ -138,6 +140,7 @@ int main(int argc, char** argv) {
   settings.vrls_per_pass = vrls;
   settings.jitter = !no_jitter;
   settings.transport = built->transport;
+  settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
   if (gather != "all") {
     settings.transport.medium_to_medium = gather == "m2m";
@@ -162,7 +165,7 @@ int main(int argc, char** argv) {
   for (int pass = 0;; ++pass) {
     if (timed ? (pass > 0 && elapsed() >= seconds) : pass >= spp) break;
     vrli::PassStats stats;
-    acc.Add(renderer->RenderPass(*method, seed, static_cast<std::uint64_t>(pass), &stats));
+    acc.Add(renderer->RenderPass(seed, static_cast<std::uint64_t>(pass), &stats));
     vrl_count += stats.vrls;
     gathers += stats.gathers;
     pass_seconds += stats.seconds;

@@ -34,9 +34,9 @@ Real Integrand(const Pair<Real>& p, Real u, Real v) { return IntegrandAt(p, u, V
 // The camera samplers, in the order every study reports them. FullProduct is vrlis's own
 // (Novák's construction over phases x transmittance, 16 nodes); the others are published.
 template <typename Real>
-using CameraSamplers =
+using SamplerTuple =
     std::tuple<Equiangular<Real>, Novak<Real>, CauchySum<Real>, CauchyMixture<Real>, FullProduct<Real>>;
-inline constexpr int kCameraSamplerCount = int(std::tuple_size_v<CameraSamplers<float>>);
+inline constexpr int kCameraSamplerCount = int(std::tuple_size_v<SamplerTuple<float>>);
 inline constexpr const char* kCameraSamplerNames[kCameraSamplerCount] = {"Equiangular", "Novak", "CauchySum",
                                                                           "CauchyMixture", "FullProduct"};
 

@@ -61,7 +61,7 @@ std::tuple<S...> FitAll(const SegmentQuery<double>& q, std::tuple<S...>*) { retu
 // piecewise-linear samplers (kinks of their densities), both lobes' peaks and a few multiples
 // of the lobes' and the seed's Cauchy widths around them.
 inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const AngleDomain<double>& dom,
-                                        const CameraSamplers<double>& samplers) {
+                                        const SamplerTuple<double>& samplers) {
   double width = dom.width();
   std::vector<double> breaks = {0, width};
   for (double node : std::get<Novak<double>>(samplers).distribution().nodes()) breaks.push_back(node);
@@ -88,7 +88,7 @@ inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSe
   constexpr int K = kCameraSamplerCount;
   Vec3<double> y = VrlPointAt(p, v);
   SegmentQuery<double> q = CameraQuery(p, y);
-  CameraSamplers<double> samplers = FitAll(q, static_cast<CameraSamplers<double>*>(nullptr));
+  SamplerTuple<double> samplers = FitAll(q, static_cast<SamplerTuple<double>*>(nullptr));
   const auto& eq = std::get<0>(samplers);
   const AngleDomain<double>& dom = eq.domain();
   Moments m;

@@ -1,50 +1,61 @@
 #pragma once
-// Choosing a camera-segment sampler at run time without virtual calls: WithSampler builds
-// the chosen sampler and hands it to a generic callable.
-#include <array>
-#include <optional>
-#include <string_view>
+// The library's one table of samplers: every sampler is chosen at run time by name through
+// these registries (core/registry.hpp). A new camera sampler is one header defining its
+// entry and one line here.
+#include <string>
 
+#include "core/registry.hpp"
 #include "samplers/cauchy_mixture.hpp"
 #include "samplers/cauchy_sum.hpp"
 #include "samplers/equiangular.hpp"
 #include "samplers/full_product.hpp"
 #include "samplers/novak.hpp"
+#include "samplers/vrl_marginal.hpp"
+#include "samplers/vrl_point.hpp"
 
 namespace vrlis {
 
-enum class Method { Equiangular, Novak, CauchySum, CauchyMixture, FullProduct };
+// Step two: a point on a segment seen from a point (built from a SegmentQuery).
+using CameraSamplers = Registry<EquiangularEntry, NovakEntry, CauchySumEntry, CauchyMixtureEntry, FullProductEntry>;
+// Step one of the medium-to-medium gather: a point on the VRL (built from a MediumGatherQuery).
+using VrlSamplers = Registry<VrlPointEntry, VrlMarginalEntry>;
 
-inline constexpr std::array<Method, 5> kMethods = {Method::Equiangular, Method::Novak, Method::CauchySum,
-                                                   Method::CauchyMixture, Method::FullProduct};
+using Method = CameraSamplers::Choice;
+using StepOne = VrlSamplers::Choice;
+inline constexpr auto kMethods = CameraSamplers::All();
+inline constexpr auto kStepOnes = VrlSamplers::All();
 
-inline constexpr std::string_view Name(Method m) {
-  switch (m) {
-    case Method::Equiangular: return "equiangular";
-    case Method::Novak: return "novak";
-    case Method::CauchySum: return "cauchy-sum";
-    case Method::CauchyMixture: return "cauchy-mixture";
-    case Method::FullProduct: return "full-product";
-  }
-  return "unknown";
-}
-
-inline std::optional<Method> ParseMethod(std::string_view name) {
-  for (Method m : kMethods)
-    if (Name(m) == name) return m;
-  return std::nullopt;
-}
+template <typename Registry>
+constexpr std::string_view Name(Choice<Registry> c) { return c.name(); }
+inline std::optional<Method> ParseMethod(std::string_view name) { return CameraSamplers::Parse(name); }
 
 template <typename Real, typename F>
 decltype(auto) WithSampler(Method m, const SegmentQuery<Real>& q, F&& f) {
-  switch (m) {
-    case Method::Novak: return f(Novak<Real>(q));
-    case Method::CauchySum: return f(CauchySum<Real>(q));
-    case Method::CauchyMixture: return f(CauchyMixture<Real>(q));
-    case Method::FullProduct: return f(FullProduct<Real>(q));
-    case Method::Equiangular: break;
-  }
-  return f(Equiangular<Real>(q));
+  return CameraSamplers::With(m, q, std::forward<F>(f));
+}
+
+// A whole medium-to-medium gather: step one on the VRL, step two on the camera segment.
+// Named "camera" (step one VrlPoint, as Novák et al.) or "camera+vrl", e.g. "novak",
+// "full-product+marginal".
+struct GatherMethod {
+  Method camera{};
+  StepOne vrl{};
+  friend bool operator==(GatherMethod a, GatherMethod b) { return a.camera == b.camera && a.vrl == b.vrl; }
+};
+
+inline std::string Name(GatherMethod m) {
+  std::string name(m.camera.name());
+  if (m.vrl != VrlSamplers::Of<VrlPointEntry>()) (name += "+") += m.vrl.name();
+  return name;
+}
+
+inline std::optional<GatherMethod> ParseGatherMethod(std::string_view name) {
+  std::size_t plus = name.find('+');
+  std::optional<Method> camera = ParseMethod(name.substr(0, plus));
+  std::optional<StepOne> vrl =
+      plus == std::string_view::npos ? VrlSamplers::Of<VrlPointEntry>() : VrlSamplers::Parse(name.substr(plus + 1));
+  if (!camera || !vrl) return std::nullopt;
+  return GatherMethod{*camera, *vrl};
 }
 
 }  // namespace vrlis

@@ -14,6 +14,9 @@
 #include "samplers/vrl_point.hpp"
 #include "samplers/vrl_marginal.hpp"
 #include "method.hpp"
+#include "gather/medium_gather.hpp"
+#include "gather/surface_gather.hpp"
+#include "gather/point_light_gather.hpp"
 
 namespace vrlis {
 static_assert(IsSegmentSampler<Equiangular<float>>::value && IsSegmentSampler<Equiangular<double>>::value);

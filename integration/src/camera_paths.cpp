@@ -6,8 +6,8 @@
 
 namespace vrli {
 
-Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, vrlis::Method method,
-                     const std::vector<Vrl>& vrls, Ray ray, Rng& rng, GatherCount* count) {
+Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
+                     Rng& rng, GatherCount* count) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   Spectrum L, beta(1.f);
@@ -18,10 +18,10 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, vrlis::Met
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) {
-        for (const Vrl& vrl : vrls) L += beta * GatherMediumToMedium(method, scene, seg, vrl, rng);
+        for (const Vrl& vrl : vrls) L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrl, rng);
         count->medium_to_medium += vrls.size();
       }
-      if (tr.direct) L += beta * SingleScattering(method, scene, seg, rng);
+      if (tr.direct) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {
@@ -50,7 +50,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, vrlis::Met
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
     if (tr.medium_to_surface && m.Present()) {
       for (const Vrl& vrl : vrls)
-        L += beta * GatherMediumToSurface(method, scene, hit.p, nf, mat.albedo, vrl, rng);
+        L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrl, rng);
       count->medium_to_surface += vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);

@@ -36,7 +36,7 @@ double Since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-Film VrlRenderer::RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
+Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
   auto t0 = std::chrono::steady_clock::now();
   std::vector<Vrl> vrls = scene_.medium.Present() && !scene_.lights.Powers().empty()
                               ? TraceLightPaths(scene_, settings_.transport, settings_.vrls_per_pass, seed, pass)
@@ -44,7 +44,7 @@ Film VrlRenderer::RenderPass(vrlis::Method method, std::uint64_t seed, std::uint
   std::atomic<std::uint64_t> gathers{0};
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) {
     GatherCount count;
-    Spectrum L = VrlRadiance(scene_, settings_.transport, method, vrls, ray, rng, &count);
+    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     return L;
   });
@@ -52,7 +52,7 @@ Film VrlRenderer::RenderPass(vrlis::Method method, std::uint64_t seed, std::uint
   return film;
 }
 
-Film PathTracingRenderer::RenderPass(vrlis::Method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
+Film PathTracingRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
   auto t0 = std::chrono::steady_clock::now();
   PathTracer pt(scene_, settings_.transport);
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) { return pt.Li(ray, rng); });

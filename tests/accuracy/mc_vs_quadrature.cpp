@@ -44,7 +44,7 @@ McMoments RunMc(std::uint64_t seed, int n, const std::function<std::pair<double,
   return m;
 }
 
-// The k-th camera sampler of CameraSamplers in double: a sample u and its density p(u).
+// The k-th camera sampler of SamplerTuple in double: a sample u and its density p(u).
 template <size_t... I>
 std::pair<double, double> SampleCameraImpl(int k, const SegmentQuery<double>& q, double xi, std::index_sequence<I...>) {
   std::pair<double, double> out{0, 0};
@@ -52,7 +52,7 @@ std::pair<double, double> SampleCameraImpl(int k, const SegmentQuery<double>& q,
     double u = sampler.sample(xi);
     out = {u, sampler.pdf(u)};
   };
-  ((k == int(I) ? run(std::tuple_element_t<I, CameraSamplers<double>>(q)) : void()), ...);
+  ((k == int(I) ? run(std::tuple_element_t<I, SamplerTuple<double>>(q)) : void()), ...);
   return out;
 }
 

@@ -83,12 +83,13 @@ TEST_CASE("bidirectional: every sampler matches the quadrature of the VRL integr
     ref.push_back(flux * sum);
   }
 
-  vrli::VrlRenderer renderer(scene, s);
   std::vector<double> mean_all, se_all, ref_all;
   for (vrlis::Method method : vrlis::kMethods) {
+    s.transport.sampling.camera = method;
+    vrli::VrlRenderer renderer(scene, s);
     std::vector<double> sum(pixels.size()), sum2(pixels.size());
     for (int p = 0; p < passes; ++p) {
-      vrli::Film f = renderer.RenderPass(method, 5, static_cast<std::uint64_t>(p), nullptr);
+      vrli::Film f = renderer.RenderPass(5, static_cast<std::uint64_t>(p), nullptr);
       for (std::size_t k = 0; k < pixels.size(); ++k) {
         double v = f.at(pixels[k].first, pixels[k].second).r;
         sum[k] += v;

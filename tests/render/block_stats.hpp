@@ -19,12 +19,12 @@ struct BlockEstimate {
 };
 
 // Runs `passes` passes and averages (r + g + b) / 3 over square blocks of `block` pixels.
-inline BlockEstimate EstimateBlocks(vrli::Renderer& r, vrlis::Method method, int width, int height, int block,
+inline BlockEstimate EstimateBlocks(vrli::Renderer& r, int width, int height, int block,
                                     int passes, std::uint64_t seed, double scale = 1) {
   const int bx = width / block, by = height / block, nb = bx * by;
   std::vector<double> sum(static_cast<std::size_t>(nb)), sum2(static_cast<std::size_t>(nb));
   for (int p = 0; p < passes; ++p) {
-    vrli::Film f = r.RenderPass(method, seed, static_cast<std::uint64_t>(p), nullptr);
+    vrli::Film f = r.RenderPass(seed, static_cast<std::uint64_t>(p), nullptr);
     std::vector<double> b(static_cast<std::size_t>(nb));
     for (int y = 0; y < by * block; ++y)
       for (int x = 0; x < bx * block; ++x) b[static_cast<std::size_t>((y / block) * bx + x / block)] += f.at(x, y).Average();

@@ -14,7 +14,7 @@ vrli::Film Render(const vrli::Scene& scene, const vrli::RenderSettings& s, int t
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   vrli::VrlRenderer r(scene, s);
   vrli::Accumulator acc(s.width, s.height);
-  for (std::uint64_t pass = 0; pass < 2; ++pass) acc.Add(r.RenderPass(vrlis::Method::Novak, seed, pass, nullptr));
+  for (std::uint64_t pass = 0; pass < 2; ++pass) acc.Add(r.RenderPass(seed, pass, nullptr));
   return acc.Mean();
 }
 

@@ -25,12 +25,13 @@ void Run(const Case& c) {
   s.width = s.height = c.size;
   s.vrls_per_pass = c.vrls;
   s.transport = built->transport;
+  s.transport.sampling.camera = c.method;
   s.transport.light_caustics = false;  // the path tracer cannot sample L S+ paths from point lights
   const int block = c.block;
   vrli::VrlRenderer vrl(built->scene, s);
   vrli::PathTracingRenderer pt(built->scene, s);
-  auto a = render_test::EstimateBlocks(vrl, c.method, s.width, s.height, block, c.vrl_passes, 11);
-  auto b = render_test::EstimateBlocks(pt, c.method, s.width, s.height, block, c.pt_passes, 12);
+  auto a = render_test::EstimateBlocks(vrl, s.width, s.height, block, c.vrl_passes, 11);
+  auto b = render_test::EstimateBlocks(pt, s.width, s.height, block, c.pt_passes, 12);
   render_test::ZSummary z = render_test::Compare(a, b);
   double ra = 0, rb = 0;
   for (std::size_t k = 0; k < a.mean.size(); ++k) {
@@ -54,13 +55,13 @@ void Run(const Case& c) {
 }  // namespace
 
 TEST_CASE("room: VRL image matches the path tracer", "[render][reference]") {
-  Run({"room", vrlis::Method::Novak, 32, 16, 480, 4, 2048, 1.25});
+  Run({"room", vrlis::CameraSamplers::Of<vrlis::NovakEntry>(), 32, 16, 480, 4, 2048, 1.25});
 }
 
 TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
-  Run({"cube", vrlis::Method::CauchySum, 32, 8, 48, 32, 256, 1.1});
+  Run({"cube", vrlis::CameraSamplers::Of<vrlis::CauchySumEntry>(), 32, 8, 48, 32, 256, 1.1});
 }
 
 TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
-  Run({"corner", vrlis::Method::CauchyMixture, 16, 16, 200, 64, 4096, 1.5});
+  Run({"corner", vrlis::CameraSamplers::Of<vrlis::CauchyMixtureEntry>(), 16, 16, 200, 64, 4096, 1.5});
 }

@@ -56,6 +56,15 @@ class SegmentSampler {
     return dist_.pdf(domain_.offset_at(t)) * domain_.dtheta_dt(t);
   }
 
+  // sample(u) and pdf() of it in one call (pbrt's Sample(u, &pdf)): the density is taken
+  // from the sampled angle offset, so the offset is not recomputed from t.
+  SegmentSample<Real> sample_pdf(Real u) const {
+    if (!usable_) return {sample(u), 0};
+    Real delta = dist_.sample(u);
+    Real t = domain_.t_at(delta);
+    return {t, dist_.pdf(delta) * domain_.dtheta_dt(t)};
+  }
+
   Real invert(Real t) const {
     if (!usable_) return valid() ? Real(0) : kNaN;
     return Clamp(dist_.cdf(domain_.offset_at(t)), Real(0), Real(1));

@@ -52,6 +52,12 @@ SegmentQuery<Real> MediumToMediumQuery(Vec3<Real> origin, Vec3<Real> dir, Real t
   return q;
 }
 
+// A sampled parameter along a segment (or a VRL) and its density with respect to it.
+template <typename Real>
+struct SegmentSample {
+  Real t = 0, pdf = 0;
+};
+
 enum class QueryError {
   None,
   NonFinite,          // a NaN or infinity where a finite number is required
@@ -59,6 +65,7 @@ enum class QueryError {
   ReversedSegment,    // tmax < tmin
   InvalidAsymmetry,   // |g| >= 1
   NegativeExtinction,
+  InvalidScattering,  // sigma_s < 0 or sigma_s > sigma_t
   OutOfRange,         // a coordinate beyond MaxCoordinate<Real>(): squared distances would overflow
 };
 
@@ -70,6 +77,7 @@ inline const char* Describe(QueryError e) {
     case QueryError::ReversedSegment: return "segment has tmax < tmin";
     case QueryError::InvalidAsymmetry: return "Henyey-Greenstein g outside (-1, 1)";
     case QueryError::NegativeExtinction: return "negative extinction";
+    case QueryError::InvalidScattering: return "scattering coefficient outside [0, extinction]";
     case QueryError::OutOfRange: return "coordinate too large for this floating-point type";
   }
   return "unknown";

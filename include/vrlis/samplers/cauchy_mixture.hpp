@@ -10,6 +10,8 @@
 //
 // Because a component is chosen first, sample() is not the CDF's inverse: invert() returns
 // the mixture CDF, and invert(sample(U)) is uniform for uniform U but differs from U.
+#include <string_view>
+
 #include "../angle/segment_sampler.hpp"
 #include "cauchy_lobe.hpp"
 
@@ -63,5 +65,12 @@ class CauchyMixtureAngle {
 
 template <typename Real = float>
 using CauchyMixture = SegmentSampler<CauchyMixtureAngle<Real>>;
+
+// Its entry in the run-time sampler tables (method.hpp).
+struct CauchyMixtureEntry {
+  static constexpr std::string_view kName = "cauchy-mixture";
+  template <typename Real>
+  using Sampler = CauchyMixture<Real>;
+};
 
 }  // namespace vrlis

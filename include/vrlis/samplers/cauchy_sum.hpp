@@ -6,6 +6,7 @@
 // the wanted one is where the argument crosses its target increasing, i.e. where the
 // quadratic's slope is +sqrt(disc).
 #include <algorithm>
+#include <string_view>
 #include <type_traits>
 
 #include "../angle/segment_sampler.hpp"
@@ -83,5 +84,12 @@ class CauchySumAngle {
 
 template <typename Real = float>
 using CauchySum = SegmentSampler<CauchySumAngle<Real>>;
+
+// Its entry in the run-time sampler tables (method.hpp).
+struct CauchySumEntry {
+  static constexpr std::string_view kName = "cauchy-sum";
+  template <typename Real>
+  using Sampler = CauchySum<Real>;
+};
 
 }  // namespace vrlis

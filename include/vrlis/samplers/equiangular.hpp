@@ -1,6 +1,8 @@
 #pragma once
 // Equiangular sampling (Kulla and Fajardo 2012): uniform in theta. Exact for isotropic
 // media and the cost floor every other sampler is measured against.
+#include <string_view>
+
 #include "../angle/segment_sampler.hpp"
 
 namespace vrlis {
@@ -20,5 +22,12 @@ class UniformAngle {
 
 template <typename Real = float>
 using Equiangular = SegmentSampler<UniformAngle<Real>>;
+
+// Its entry in the run-time sampler tables (method.hpp).
+struct EquiangularEntry {
+  static constexpr std::string_view kName = "equiangular";
+  template <typename Real>
+  using Sampler = Equiangular<Real>;
+};
 
 }  // namespace vrlis

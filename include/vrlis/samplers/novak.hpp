@@ -7,6 +7,7 @@
 // is chosen by its trapezoid area, then the linear density inside it is inverted.
 #include <algorithm>
 #include <array>
+#include <string_view>
 
 #include "../angle/full_product.hpp"
 #include "../angle/segment_sampler.hpp"
@@ -129,5 +130,12 @@ class PiecewiseLinearAngle {
 // Novák et al.: the phase product, 10 nodes as in the public implementation.
 template <typename Real = float, int kNodes = 10>
 using Novak = SegmentSampler<PiecewiseLinearAngle<Real, kNodes, PhaseProduct<Real>>>;
+
+// Its entry in the run-time sampler tables (method.hpp).
+struct NovakEntry {
+  static constexpr std::string_view kName = "novak";
+  template <typename Real>
+  using Sampler = Novak<Real>;
+};
 
 }  // namespace vrlis

@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <string_view>
 
 #include "../angle/full_product.hpp"
 #include "novak.hpp"
@@ -74,6 +75,11 @@ class VrlMarginal {
     Accumulate();
   }
 
+  // Step one of a medium-to-medium gather (a finite camera segment).
+  explicit VrlMarginal(const MediumGatherQuery<Real>& q)
+      : VrlMarginal(VrlMarginalQuery<Real>{q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.at(q.camera.tmin),
+                                           q.camera.dir, q.camera.tmax - q.camera.tmin, q.medium.g, q.medium.sigma_t}) {}
+
   bool valid() const { return valid_; }
   const VrlPoint<Real>& vrl_point() const { return vp_; }
 
@@ -87,6 +93,11 @@ class VrlMarginal {
     Real p1 = vp_.pdf(v);
     if (!(p1 > 0)) return 0;
     return p1 * Lerp(vp_.invert(v)) / total_;
+  }
+
+  SegmentSample<Real> sample_pdf(Real u) const {
+    Real v = sample(u);
+    return {v, pdf(v)};
   }
 
   Real invert(Real v) const {
@@ -227,6 +238,13 @@ class VrlMarginal {
   int count_ = kNodes;
   std::array<Real, kMax> xi_, value_, cdf_;
   Real total_ = 1;
+};
+
+// Its entry in the run-time sampler tables (method.hpp).
+struct VrlMarginalEntry {
+  static constexpr std::string_view kName = "marginal";
+  template <typename Real>
+  using Sampler = VrlMarginal<Real>;
 };
 
 }  // namespace vrlis

@@ -13,9 +13,10 @@
 // v0 but finite. A VRL shorter than min<Real> / epsilon<Real> (zero length included)
 // samples tmin with pdf 0.
 #include <limits>
+#include <string_view>
 
 #include "../core/math.hpp"
-#include "../core/query.hpp"
+#include "../core/gather_query.hpp"
 #include "../core/vec3.hpp"
 
 namespace vrlis {
@@ -57,6 +58,10 @@ class VrlPoint {
     if (!(total_ > 0) || !std::isfinite(total_)) k_ = 0;  // uniform to the last digit
   }
 
+  // Step one of a medium-to-medium gather: the VRL against the camera segment's line.
+  explicit VrlPoint(const MediumGatherQuery<Real>& q)
+      : VrlPoint(VrlPointQuery<Real>{q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.origin, q.camera.dir}) {}
+
   bool valid() const { return valid_; }
 
   Real sample(Real u) const {
@@ -81,6 +86,11 @@ class VrlPoint {
     return k_ / (total_ * std::sqrt(1 + x * x));
   }
 
+  SegmentSample<Real> sample_pdf(Real u) const {
+    Real v = sample(u);
+    return {v, pdf(v)};
+  }
+
   Real invert(Real v) const {
     if (!valid_) return kNaN;
     if (!Representable()) return 0;
@@ -100,6 +110,13 @@ class VrlPoint {
   Real tmin_, tmax_;
   bool valid_ = false;
   Real k_ = 0, xa_ = 0, total_ = 0;
+};
+
+// Its entry in the run-time sampler tables (method.hpp).
+struct VrlPointEntry {
+  static constexpr std::string_view kName = "vrl-point";
+  template <typename Real>
+  using Sampler = VrlPoint<Real>;
 };
 
 }  // namespace vrlis

@@ -18,7 +18,7 @@ struct GatherCount {
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 
-Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, vrlis::Method method,
-                     const std::vector<Vrl>& vrls, Ray ray, Rng& rng, GatherCount* count);
+Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls, Ray ray,
+                     Rng& rng, GatherCount* count);
 
 }  // namespace vrli

@@ -1,6 +1,6 @@
 #pragma once
-// The VRL estimators (section 1 of the maths note), one sample each, with the library's
-// samplers, and single scattering from point lights along a camera segment.
+// The VRL estimators of docs/maths.md#estimators, one sample each, as a renderer uses the
+// library: build the query, let vrlis sample and weight it, trace one occlusion ray.
 #include <vrlis/method.hpp>
 
 #include "scene.hpp"
@@ -15,9 +15,8 @@ struct CameraSegment {
   Interval iv;
 };
 
-// Radiance along the camera ray from light scattered at a VRL point and again on the
-// segment: VRL point by VrlPoint, camera point by `method`.
-Spectrum GatherMediumToMedium(vrlis::Method method, const Scene& scene, const CameraSegment& seg,
+// Radiance along the camera ray from light scattered at a VRL point and again on the segment.
+Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng);
 
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,

@@ -5,8 +5,6 @@
 // result does not depend on the thread count.
 #include <cstdint>
 
-#include <vrlis/method.hpp>
-
 #include "film.hpp"
 #include "scene.hpp"
 #include "transport.hpp"
@@ -28,26 +26,26 @@ struct RenderSettings {
 class Renderer {
  public:
   virtual ~Renderer() = default;
-  // Pass number `pass` of the render seeded by `seed`, with camera sampler `method`.
-  virtual Film RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) = 0;
+  // Pass number `pass` of the render seeded by `seed`.
+  virtual Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) = 0;
 };
 
 // The bidirectional VRL pipeline: light pass, then camera pass.
 class VrlRenderer : public Renderer {
  public:
   VrlRenderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
-  Film RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
+  Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
 
  private:
   const Scene& scene_;
   RenderSettings settings_;
 };
 
-// The reference: a volumetric path tracer with next-event estimation (ignores `method`).
+// The reference: a volumetric path tracer with next-event estimation.
 class PathTracingRenderer : public Renderer {
  public:
   PathTracingRenderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
-  Film RenderPass(vrlis::Method method, std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
+  Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
 
  private:
   const Scene& scene_;

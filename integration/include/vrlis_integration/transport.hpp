@@ -1,9 +1,14 @@
 #pragma once
 // Which parts of light transport a render computes (see docs/renderer.md for how the parts
 // add up to the whole without counting a path twice).
+#include <vrlis/method.hpp>
+
 namespace vrli {
 
 struct TransportSettings {
+  // How every VRL gather samples: step one and step two of the medium-to-medium gather; the
+  // medium-to-surface gather and single scattering use its camera sampler.
+  vrlis::GatherMethod sampling{vrlis::CameraSamplers::Of<vrlis::NovakEntry>(), {}};
   bool medium_to_medium = true;   // VRL gather along camera segments
   bool medium_to_surface = true;  // VRL gather at the diffuse surface ending the camera chain
   bool direct = true;             // next-event estimation at the first camera vertex

@@ -1,0 +1,131 @@
+#pragma once
+// What a renderer asks of a VRL gather (docs/maths.md#estimators): one camera segment (or
+// one surface point, or one point light) against one VRL, in a homogeneous medium. These
+// three queries are the library's one model of a gather configuration; the samplers' own
+// queries (SegmentQuery, VrlPointQuery) are built from them.
+#include <initializer_list>
+
+#include "query.hpp"
+
+namespace vrlis {
+
+// A ray segment x(t) = origin + t dir, t in [tmin, tmax]; tmax may be +infinity.
+template <typename Real>
+struct RaySegment {
+  Vec3<Real> origin{}, dir{};  // dir unit length
+  Real tmin = 0, tmax = 0;
+  Vec3<Real> at(Real t) const { return origin + t * dir; }
+};
+
+// A virtual ray light y(v) = origin + v dir, v in [0, length] (finite), carrying light that
+// travels along dir.
+template <typename Real>
+struct VrlSegment {
+  Vec3<Real> origin{}, dir{};  // dir unit length
+  Real length = 0;
+  Vec3<Real> at(Real v) const { return origin + v * dir; }
+};
+
+// A homogeneous medium: Henyey-Greenstein asymmetry, scattering and extinction coefficients.
+template <typename Real>
+struct Medium {
+  Real g = 0, sigma_s = 0, sigma_t = 0;
+};
+
+// Medium to medium: light scattered at a VRL point, again at a camera-segment point, then
+// carried to the segment's origin.
+template <typename Real>
+struct MediumGatherQuery {
+  RaySegment<Real> camera;
+  VrlSegment<Real> vrl;
+  Medium<Real> medium;
+};
+
+// Medium to surface: light scattered at a VRL point and reflected by a diffuse (Lambertian)
+// surface point whose unit normal faces the side the light arrives from.
+template <typename Real>
+struct SurfaceGatherQuery {
+  Vec3<Real> point{}, normal{};
+  VrlSegment<Real> vrl;
+  Medium<Real> medium;
+};
+
+// Single scattering: light from an isotropic point light scattered once on the camera segment.
+template <typename Real>
+struct PointLightGatherQuery {
+  RaySegment<Real> camera;
+  Vec3<Real> light{};
+  Medium<Real> medium;
+};
+
+namespace detail {
+template <typename Real>
+bool AllFinite(std::initializer_list<Vec3<Real>> vs, std::initializer_list<Real> xs) {
+  Real zero = 0;  // x * 0 is 0 for finite x and NaN otherwise
+  for (Vec3<Real> v : vs) zero += Real(0) * (v.x + v.y + v.z);
+  for (Real x : xs) zero += Real(0) * x;
+  return zero == 0;
+}
+template <typename Real>
+QueryError ValidateMedium(const Medium<Real>& m) {
+  if (!IsAsymmetry(m.g)) return QueryError::InvalidAsymmetry;
+  if (!(m.sigma_t >= 0)) return QueryError::NegativeExtinction;
+  if (!(m.sigma_s >= 0 && m.sigma_s <= m.sigma_t)) return QueryError::InvalidScattering;
+  return QueryError::None;
+}
+template <typename Real>
+QueryError ValidateSegment(const RaySegment<Real>& s) {
+  if (!(s.tmax >= s.tmin)) return QueryError::ReversedSegment;
+  if (!IsUnit(s.dir)) return QueryError::NotUnitDirection;
+  if (!InRange(s.origin) || std::abs(s.tmin) > MaxCoordinate<Real>() ||
+      (std::isfinite(s.tmax) && std::abs(s.tmax) > MaxCoordinate<Real>()))
+    return QueryError::OutOfRange;
+  return QueryError::None;
+}
+template <typename Real>
+QueryError ValidateVrl(const VrlSegment<Real>& v) {
+  if (!(v.length >= 0)) return QueryError::ReversedSegment;
+  if (!IsUnit(v.dir)) return QueryError::NotUnitDirection;
+  if (!InRange(v.origin) || v.length > MaxCoordinate<Real>()) return QueryError::OutOfRange;
+  return QueryError::None;
+}
+// The first error of a list, in order.
+inline QueryError FirstError(std::initializer_list<QueryError> errors) {
+  for (QueryError e : errors)
+    if (e != QueryError::None) return e;
+  return QueryError::None;
+}
+}  // namespace detail
+
+template <typename Real>
+QueryError Validate(const MediumGatherQuery<Real>& q) {
+  const auto& c = q.camera;
+  const auto& v = q.vrl;
+  if (!detail::AllFinite({c.origin, c.dir, v.origin, v.dir}, {c.tmin, v.length, q.medium.g, q.medium.sigma_s,
+                                                               q.medium.sigma_t}) ||
+      std::isnan(c.tmax))
+    return QueryError::NonFinite;
+  return detail::FirstError({detail::ValidateSegment(c), detail::ValidateVrl(v), detail::ValidateMedium(q.medium)});
+}
+
+template <typename Real>
+QueryError Validate(const SurfaceGatherQuery<Real>& q) {
+  const auto& v = q.vrl;
+  if (!detail::AllFinite({q.point, q.normal, v.origin, v.dir}, {v.length, q.medium.g, q.medium.sigma_s, q.medium.sigma_t}))
+    return QueryError::NonFinite;
+  if (!detail::IsUnit(q.normal)) return QueryError::NotUnitDirection;
+  if (!detail::InRange(q.point)) return QueryError::OutOfRange;
+  return detail::FirstError({detail::ValidateVrl(v), detail::ValidateMedium(q.medium)});
+}
+
+template <typename Real>
+QueryError Validate(const PointLightGatherQuery<Real>& q) {
+  const auto& c = q.camera;
+  if (!detail::AllFinite({c.origin, c.dir, q.light}, {c.tmin, q.medium.g, q.medium.sigma_s, q.medium.sigma_t}) ||
+      std::isnan(c.tmax))
+    return QueryError::NonFinite;
+  if (!detail::InRange(q.light)) return QueryError::OutOfRange;
+  return detail::FirstError({detail::ValidateSegment(c), detail::ValidateMedium(q.medium)});
+}
+
+}  // namespace vrlis

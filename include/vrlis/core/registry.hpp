@@ -1,0 +1,81 @@
+#pragma once
+// Run-time choice among samplers without virtual calls. A registry lists entries, each a
+// struct with a name and a sampler template:
+//   struct NovakEntry { static constexpr std::string_view kName = "novak";
+//                       template <typename Real> using Sampler = Novak<Real>; };
+// A Choice is an index into the list; With(choice, query, f) builds the chosen sampler from
+// the query (its fitting step) and calls f with it, so f is compiled once per sampler and
+// the inner loop holds one branch on the index instead of an indirect call.
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace vrlis {
+
+template <typename Registry>
+class Choice {
+ public:
+  constexpr Choice() = default;
+  constexpr int index() const { return index_; }
+  constexpr std::string_view name() const { return Registry::kNames[static_cast<std::size_t>(index_)]; }
+  friend constexpr bool operator==(Choice a, Choice b) { return a.index_ == b.index_; }
+  friend constexpr bool operator!=(Choice a, Choice b) { return a.index_ != b.index_; }
+
+ private:
+  friend Registry;
+  constexpr explicit Choice(int index) : index_(index) {}
+  int index_ = 0;
+};
+
+namespace detail {
+template <typename Query>
+struct RealOf;
+template <template <typename> class Query, typename R>
+struct RealOf<Query<R>> {
+  using type = R;
+};
+
+template <typename Real, typename Query, typename F, typename Entry, typename... Rest>
+decltype(auto) Dispatch(int index, const Query& q, F& f) {
+  if constexpr (sizeof...(Rest) == 0) {
+    return f(typename Entry::template Sampler<Real>(q));
+  } else {
+    if (index == 0) return f(typename Entry::template Sampler<Real>(q));
+    return Dispatch<Real, Query, F, Rest...>(index - 1, q, f);
+  }
+}
+}  // namespace detail
+
+template <typename... Entries>
+struct Registry {
+  using Choice = vrlis::Choice<Registry>;
+  static constexpr std::size_t kCount = sizeof...(Entries);
+  static constexpr std::array<std::string_view, kCount> kNames = {Entries::kName...};
+
+  template <typename Entry>
+  static constexpr Choice Of() {
+    int index = 0, found = -1;
+    ((found = std::is_same_v<Entry, Entries> ? index : found, ++index), ...);
+    return Choice(found);
+  }
+
+  static constexpr std::array<Choice, kCount> All() {
+    std::array<Choice, kCount> all{};
+    for (std::size_t i = 0; i < kCount; ++i) all[i] = Choice(static_cast<int>(i));
+    return all;
+  }
+
+  static constexpr std::optional<Choice> Parse(std::string_view name) {
+    for (std::size_t i = 0; i < kCount; ++i)
+      if (kNames[i] == name) return Choice(static_cast<int>(i));
+    return std::nullopt;
+  }
+
+  // Builds the chosen sampler from q and returns f(sampler); f must return one type for all.
+  template <typename Query, typename F>
+  static decltype(auto) With(Choice c, const Query& q, F&& f) {
+    return detail::Dispatch<typename detail::RealOf<Query>::type, Query, F, Entries...>(c.index(), q, f);
+  }
+};
+
+}  // namespace vrlis

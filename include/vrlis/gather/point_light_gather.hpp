@@ -1,0 +1,54 @@
+#pragma once
+// Single scattering from an isotropic point light along a camera segment
+// (docs/maths.md#estimators). The integrand per unit length, per unit intensity, is
+//   sigma_s rho(w_c . w) T(t - tmin) T(|l - x|) / |l - x|^2,
+// w the unit vector from the camera point x(t) to the light l.
+#include "../method.hpp"
+#include "gather_sample.hpp"
+
+namespace vrlis {
+
+template <typename Real>
+SegmentQuery<Real> CameraStepQuery(const PointLightGatherQuery<Real>& q) {
+  SegmentQuery<Real> s;
+  s.origin = q.camera.origin;
+  s.dir = q.camera.dir;
+  s.tmin = q.camera.tmin;
+  s.tmax = q.camera.tmax;
+  s.g = q.medium.g;
+  s.point = q.light;
+  s.lobe = {LobeKind::None, {}, Real(0)};
+  s.sigma_t = q.medium.sigma_t;
+  return s;
+}
+
+template <typename Real>
+Real PointLightGatherIntegrand(const PointLightGatherQuery<Real>& q, Real t, Real* transmittance = nullptr) {
+  Vec3<Real> x = q.camera.at(t), w = q.light - x;
+  Real r2 = Dot(w, w);
+  if (!(r2 > 0)) return 0;
+  Real r = std::sqrt(r2);
+  const Medium<Real>& m = q.medium;
+  Real connection = std::exp(-m.sigma_t * r);
+  if (transmittance) *transmittance = connection;
+  return m.sigma_s * HenyeyGreenstein(m.g, Clamp(Dot(q.camera.dir, w) / r, Real(-1), Real(1))) *
+         std::exp(-m.sigma_t * (t - q.camera.tmin)) * connection / r2;
+}
+
+template <typename Real>
+GatherSample<Real> SamplePointLightGather(Method method, const PointLightGatherQuery<Real>& q, Real u) {
+  if (Validate(q) != QueryError::None) return {};
+  return CameraSamplers::With(method, CameraStepQuery(q), [&](const auto& sampler) {
+    SegmentSample<Real> t = sampler.sample_pdf(u);
+    if (!detail::Usable(t)) return GatherSample<Real>{};
+    GatherSample<Real> s;
+    s.camera_point = q.camera.at(t.t);
+    s.light_point = q.light;
+    s.t = t.t;
+    s.pdf_t = t.pdf;
+    Real f = PointLightGatherIntegrand(q, t.t, &s.transmittance);
+    return detail::Finish(s, f, t.pdf);
+  });
+}
+
+}  // namespace vrlis
