@@ -1,0 +1,158 @@
+// Hypothesis, for every gather estimator and configuration: the mean of the weights f / pdf
+// equals the integral of f (computed by adaptive Gauss-Kronrod quadrature). Each mean is
+// compared by its z-score against the two-sided normal critical value at 1 % overall,
+// Bonferroni-corrected over every comparison in this file; each case also checks that the
+// same samples reject an integral 10 % off (the test can fail).
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <catch2/catch.hpp>
+#include <vrlis/vrlis.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace {
+
+using vrlis::Vec3;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kComparisons = 3 * 10 * 2 + 3 * 5 * 2 + 3 * 5 * 2;  // medium, surface, point light x float, double
+
+double Critical() {
+  return boost::math::quantile(boost::math::normal(), 1 - 0.01 / (2 * kComparisons));
+}
+
+template <typename F>
+double Integrate(F f, double a, double b) {
+  return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, a, b, 12, 1e-9);
+}
+
+// Mean and standard error of n estimates drawn by estimate(u1, u2).
+template <typename Real, typename Estimate>
+std::pair<double, double> MeanAndError(Estimate estimate, int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  double sum = 0, sum2 = 0;
+  for (int i = 0; i < n; ++i) {
+    double w = estimate(Real(uniform(rng)), Real(uniform(rng)));
+    REQUIRE(std::isfinite(w));
+    sum += w;
+    sum2 += w * w;
+  }
+  double mean = sum / n;
+  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0) / (n - 1))};
+}
+
+void CheckUnbiased(const std::string& what, std::pair<double, double> estimate, double integral) {
+  auto [mean, error] = estimate;
+  double z = (mean - integral) / error, z_control = (mean - 1.1 * integral) / error;
+  std::printf("[gather] %-60s mean %.6g quadrature %.6g z %+.2f (10%% control z %+.1f)\n", what.c_str(), mean,
+              integral, z, z_control);
+  INFO(what << ": mean " << mean << " +- " << error << ", quadrature " << integral);
+  CHECK(std::abs(z) < Critical());
+  CHECK(std::abs(z_control) > Critical());
+}
+
+template <typename Real>
+vrlis::RaySegment<Real> Camera(double tmax) {
+  return {{0, 0, 0}, {0, 0, -1}, Real(0.5), Real(tmax)};
+}
+template <typename Real>
+vrlis::VrlSegment<Real> Vrl(Vec3<double> o, Vec3<double> d, double length) {
+  Vec3<double> n = vrlis::Normalize(d);
+  return {{Real(o.x), Real(o.y), Real(o.z)}, {Real(n.x), Real(n.y), Real(n.z)}, Real(length)};
+}
+
+// Three configurations: a short bounded segment and an oblique VRL in a dense forward
+// medium, a long one with a nearly parallel VRL in a backward medium, an unbounded one.
+template <typename Real>
+vrlis::MediumGatherQuery<Real> MediumCase(int k) {
+  switch (k) {
+    case 0: return {Camera<Real>(4), Vrl<Real>({0.6, -0.4, -1}, {1, 1, -0.5}, 3), {Real(0.7), Real(0.6), Real(1)}};
+    case 1: return {Camera<Real>(12), Vrl<Real>({0.3, 0.2, -2}, {0.1, 0, -1}, 8), {Real(-0.6), Real(0.2), Real(0.35)}};
+  }
+  return {Camera<Real>(std::numeric_limits<Real>::infinity()), Vrl<Real>({-1, 0.5, -3}, {0, 1, 0.3}, 5),
+          {Real(0.5), Real(0.5), Real(0.8)}};
+}
+
+template <typename Real>
+double MediumIntegral(const vrlis::MediumGatherQuery<Real>& qr) {
+  vrlis::MediumGatherQuery<double> q{{vrlis::Vec3<double>{qr.camera.origin.x, qr.camera.origin.y, qr.camera.origin.z},
+                                      {qr.camera.dir.x, qr.camera.dir.y, qr.camera.dir.z}, qr.camera.tmin,
+                                      std::isfinite(qr.camera.tmax) ? double(qr.camera.tmax) : kInf},
+                                     {{qr.vrl.origin.x, qr.vrl.origin.y, qr.vrl.origin.z},
+                                      {qr.vrl.dir.x, qr.vrl.dir.y, qr.vrl.dir.z}, qr.vrl.length},
+                                     {qr.medium.g, qr.medium.sigma_s, qr.medium.sigma_t}};
+  return Integrate([&](double v) {
+    return Integrate([&](double t) { return vrlis::MediumGatherIntegrand(q, t, v); }, q.camera.tmin, q.camera.tmax);
+  }, 0.0, q.vrl.length);
+}
+
+template <typename Real>
+void MediumGatherIsUnbiased(const char* type) {
+  for (int k = 0; k < 3; ++k) {
+    vrlis::MediumGatherQuery<Real> q = MediumCase<Real>(k);
+    double integral = MediumIntegral(q);
+    for (vrlis::StepOne one : vrlis::kStepOnes)
+      for (vrlis::Method two : vrlis::kMethods) {
+        vrlis::GatherMethod m{two, one};
+        if (k == 2 && one == vrlis::VrlSamplers::Of<vrlis::VrlMarginalEntry>()) continue;  // UNBOUNDED-MARGINAL: pending
+        auto estimate = MeanAndError<Real>(
+            [&](Real u1, Real u2) { return double(vrlis::SampleMediumGather(m, q, u1, u2).weight); }, 200000, 7 + k);
+        CheckUnbiased(std::string(type) + " medium case " + std::to_string(k) + " " + vrlis::Name(m), estimate, integral);
+      }
+  }
+}
+
+template <typename Real>
+vrlis::SurfaceGatherQuery<Real> SurfaceCase(int k) {
+  Vec3<Real> p{0, -1, -2}, n{0, 1, 0};
+  switch (k) {
+    case 0: return {p, n, Vrl<Real>({-1, 0.5, -2.5}, {1, 0.2, 0}, 3), {Real(0.8), Real(0.5), Real(0.7)}};
+    case 1: return {p, n, Vrl<Real>({0.5, 3, -2}, {0, -1, 0.1}, 4.5), {Real(-0.5), Real(0.3), Real(0.4)}};
+  }
+  return {p, n, Vrl<Real>({-3, -0.5, -2}, {1, 0, 0}, 6), {Real(0.3), Real(0.9), Real(1.2)}};
+}
+
+template <typename Real>
+void SurfaceGatherIsUnbiased(const char* type) {
+  for (int k = 0; k < 3; ++k) {
+    vrlis::SurfaceGatherQuery<Real> q = SurfaceCase<Real>(k);
+    double integral = Integrate([&](double v) { return double(vrlis::SurfaceGatherIntegrand(q, Real(v))); }, 0.0,
+                                q.vrl.length);
+    for (vrlis::Method m : vrlis::kMethods) {
+      auto estimate = MeanAndError<Real>(
+          [&](Real u, Real) { return double(vrlis::SampleSurfaceGather(m, q, u).weight); }, 200000, 17 + k);
+      CheckUnbiased(std::string(type) + " surface case " + std::to_string(k) + " " + std::string(vrlis::Name(m)),
+                    estimate, integral);
+    }
+  }
+}
+
+template <typename Real>
+void PointLightGatherIsUnbiased(const char* type) {
+  const Vec3<Real> lights[3] = {{Real(0.5), 0, -2}, {0, Real(0.05), -6}, {2, 1, Real(0.5)}};
+  const double tmax[3] = {4, 10, kInf};
+  for (int k = 0; k < 3; ++k) {
+    vrlis::PointLightGatherQuery<Real> q{Camera<Real>(tmax[k]), lights[k], {Real(k == 1 ? -0.8 : 0.6), Real(0.4), Real(0.6)}};
+    double integral = Integrate([&](double t) { return double(vrlis::PointLightGatherIntegrand(q, Real(t))); },
+                                double(q.camera.tmin), tmax[k]);
+    for (vrlis::Method m : vrlis::kMethods) {
+      auto estimate = MeanAndError<Real>(
+          [&](Real u, Real) { return double(vrlis::SamplePointLightGather(m, q, u).weight); }, 200000, 27 + k);
+      CheckUnbiased(std::string(type) + " point light case " + std::to_string(k) + " " + std::string(vrlis::Name(m)),
+                    estimate, integral);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("medium-to-medium gather: every step one x step two is unbiased (double)") { MediumGatherIsUnbiased<double>("double"); }
+TEST_CASE("medium-to-medium gather: every step one x step two is unbiased (float)") { MediumGatherIsUnbiased<float>("float"); }
+TEST_CASE("medium-to-surface gather: every sampler is unbiased (double)") { SurfaceGatherIsUnbiased<double>("double"); }
+TEST_CASE("medium-to-surface gather: every sampler is unbiased (float)") { SurfaceGatherIsUnbiased<float>("float"); }
+TEST_CASE("point-light gather: every sampler is unbiased (double)") { PointLightGatherIsUnbiased<double>("double"); }
+TEST_CASE("point-light gather: every sampler is unbiased (float)") { PointLightGatherIsUnbiased<float>("float"); }

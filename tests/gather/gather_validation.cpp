@@ -1,0 +1,115 @@
+// Every gather query is validated the same way: each kind of bad input gives its QueryError
+// and an estimate that contributes nothing (weight 0, never NaN); the edge of validity
+// (an unbounded camera segment, a zero-length VRL, sigma_s = sigma_t) is accepted.
+#include <catch2/catch.hpp>
+#include <vrlis/vrlis.hpp>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace {
+
+template <typename Real>
+struct Mutation {
+  const char* what;
+  vrlis::QueryError expected;
+  std::function<void(vrlis::MediumGatherQuery<Real>&)> apply;
+};
+
+template <typename Real>
+vrlis::MediumGatherQuery<Real> Good() {
+  return {{{0, 0, 0}, {0, 0, -1}, 0, 10}, {{1, 0, -3}, {0, 1, 0}, 5}, {Real(0.5), Real(0.3), Real(0.4)}};
+}
+
+template <typename Real>
+void MediumQueriesAreValidated() {
+  using E = vrlis::QueryError;
+  const Real inf = std::numeric_limits<Real>::infinity(), nan = std::numeric_limits<Real>::quiet_NaN();
+  const Real huge = vrlis::MaxCoordinate<Real>() * 2;
+  std::vector<Mutation<Real>> cases = {
+      {"NaN camera origin", E::NonFinite, [&](auto& q) { q.camera.origin.x = nan; }},
+      {"NaN camera tmax", E::NonFinite, [&](auto& q) { q.camera.tmax = nan; }},
+      {"infinite VRL length", E::NonFinite, [&](auto& q) { q.vrl.length = inf; }},
+      {"NaN g", E::NonFinite, [&](auto& q) { q.medium.g = nan; }},
+      {"non-unit camera direction", E::NotUnitDirection, [](auto& q) { q.camera.dir.z = -2; }},
+      {"non-unit VRL direction", E::NotUnitDirection, [](auto& q) { q.vrl.dir.y = Real(0.5); }},
+      {"reversed camera segment", E::ReversedSegment, [](auto& q) { q.camera.tmax = -1; }},
+      {"negative VRL length", E::ReversedSegment, [](auto& q) { q.vrl.length = -1; }},
+      {"g = 1", E::InvalidAsymmetry, [](auto& q) { q.medium.g = 1; }},
+      {"negative extinction", E::NegativeExtinction, [](auto& q) { q.medium.sigma_t = -1; }},
+      {"scattering above extinction", E::InvalidScattering, [](auto& q) { q.medium.sigma_s = 1; }},
+      {"negative scattering", E::InvalidScattering, [](auto& q) { q.medium.sigma_s = -Real(0.1); }},
+      {"camera origin out of range", E::OutOfRange, [&](auto& q) { q.camera.origin.y = huge; }},
+      {"VRL origin out of range", E::OutOfRange, [&](auto& q) { q.vrl.origin.x = -huge; }},
+      {"unbounded camera segment", E::None, [&](auto& q) { q.camera.tmax = inf; }},
+      {"zero-length VRL", E::None, [](auto& q) { q.vrl.length = 0; }},
+      {"zero-length camera segment", E::None, [](auto& q) { q.camera.tmax = q.camera.tmin; }},
+      {"sigma_s = sigma_t", E::None, [](auto& q) { q.medium.sigma_s = q.medium.sigma_t; }},
+  };
+  for (const auto& c : cases) {
+    vrlis::MediumGatherQuery<Real> q = Good<Real>();
+    c.apply(q);
+    INFO(c.what);
+    CHECK(vrlis::Validate(q) == c.expected);
+    for (vrlis::StepOne one : vrlis::kStepOnes)
+      for (vrlis::Method two : vrlis::kMethods) {
+        INFO(vrlis::Name(vrlis::GatherMethod{two, one}));
+        for (Real u : {Real(0), Real(0.37), Real(1)}) {
+          vrlis::GatherSample<Real> s = vrlis::SampleMediumGather(vrlis::GatherMethod{two, one}, q, u, 1 - u);
+          CHECK(std::isfinite(s.weight));
+          CHECK(s.weight >= 0);
+          if (c.expected != E::None) CHECK(s.weight == 0);
+        }
+      }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("medium gather queries: each bad input has its error and contributes nothing (float)") {
+  MediumQueriesAreValidated<float>();
+}
+TEST_CASE("medium gather queries: each bad input has its error and contributes nothing (double)") {
+  MediumQueriesAreValidated<double>();
+}
+
+TEST_CASE("surface and point-light gather queries are validated") {
+  using E = vrlis::QueryError;
+  vrlis::SurfaceGatherQuery<float> s{{0, -1, -2}, {0, 1, 0}, {{-1, 0.5f, -2.5f}, {1, 0, 0}, 3}, {0.5f, 0.3f, 0.4f}};
+  CHECK(vrlis::Validate(s) == E::None);
+  auto bad_normal = s;
+  bad_normal.normal = {0, 0.5f, 0};
+  CHECK(vrlis::Validate(bad_normal) == E::NotUnitDirection);
+  auto nan_point = s;
+  nan_point.point.z = std::nanf("");
+  CHECK(vrlis::Validate(nan_point) == E::NonFinite);
+  CHECK(vrlis::SampleSurfaceGather(vrlis::kMethods[1], nan_point, 0.5f).weight == 0);
+
+  vrlis::PointLightGatherQuery<float> p{{{0, 0, 0}, {0, 0, -1}, 0, 5}, {0.5f, 0, -2}, {0.5f, 0.3f, 0.4f}};
+  CHECK(vrlis::Validate(p) == E::None);
+  auto reversed = p;
+  reversed.camera.tmax = -1;
+  CHECK(vrlis::Validate(reversed) == E::ReversedSegment);
+  auto far_light = p;
+  far_light.light.x = vrlis::MaxCoordinate<float>() * 2;
+  CHECK(vrlis::Validate(far_light) == E::OutOfRange);
+  CHECK(vrlis::SamplePointLightGather(vrlis::kMethods[2], reversed, 0.5f).weight == 0);
+}
+
+TEST_CASE("gather methods are named camera[+vrl] and parse back") {
+  for (vrlis::StepOne one : vrlis::kStepOnes)
+    for (vrlis::Method two : vrlis::kMethods) {
+      vrlis::GatherMethod m{two, one};
+      auto parsed = vrlis::ParseGatherMethod(vrlis::Name(m));
+      REQUIRE(parsed);
+      CHECK(*parsed == m);
+    }
+  CHECK(vrlis::Name(*vrlis::ParseGatherMethod("novak")) == "novak");
+  CHECK(vrlis::Name(*vrlis::ParseGatherMethod("full-product+marginal")) == "full-product+marginal");
+  CHECK_FALSE(vrlis::ParseGatherMethod("novak+"));
+  CHECK_FALSE(vrlis::ParseGatherMethod("nvak"));
+  CHECK_FALSE(vrlis::ParseGatherMethod("novak+novak"));
+  CHECK_FALSE(vrlis::ParseGatherMethod(""));
+}
