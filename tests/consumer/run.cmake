@@ -12,16 +12,19 @@ run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_CXX_COMPILER=
     -DVRLIS_BUILD_BENCH=OFF -DVRLIS_BUILD_EXAMPLES=OFF -DCMAKE_INSTALL_PREFIX=${WORK_DIR}/prefix)
 run(${CMAKE_COMMAND} --install ${WORK_DIR}/build)
 
-# The README's example is the consumer's main.cpp: the snippet users copy is the one we compile.
+# The README's examples are the consumer's programs: the snippets users copy are the ones we compile.
 file(READ ${SOURCE_DIR}/README.md readme)
-string(REGEX MATCH "<!-- usage-example -->[\r\n]+```cpp[\r\n]+(.*)```[\r\n]+<!-- /usage-example -->" _ "${readme}")
-if(NOT CMAKE_MATCH_1)
-  message(FATAL_ERROR "README.md has no usage example between the usage-example markers")
-endif()
 file(COPY ${SOURCE_DIR}/tests/consumer/project/ DESTINATION ${WORK_DIR}/project)
-file(WRITE ${WORK_DIR}/project/main.cpp "${CMAKE_MATCH_1}")
+foreach(example usage gather)
+  string(REGEX MATCH "<!-- ${example}-example -->[\r\n]+```cpp[\r\n]+([^`]*)```[\r\n]+<!-- /${example}-example -->" _ "${readme}")
+  if(NOT CMAKE_MATCH_1)
+    message(FATAL_ERROR "README.md has no ${example} example between the ${example}-example markers")
+  endif()
+  file(WRITE ${WORK_DIR}/project/${example}.cpp "${CMAKE_MATCH_1}")
+endforeach()
 
 run(${CMAKE_COMMAND} -S ${WORK_DIR}/project -B ${WORK_DIR}/project-build -DCMAKE_CXX_COMPILER=${CXX}
     -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/project-build)
-run(${WORK_DIR}/project-build/consumer)
+run(${WORK_DIR}/project-build/usage)
+run(${WORK_DIR}/project-build/gather)
