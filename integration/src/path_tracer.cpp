@@ -1,8 +1,12 @@
 #include "vrlis_integration/path_tracer.hpp"
 
 #include "vrlis_integration/direct.hpp"
+#include "vrlis_integration/gather.hpp"
 
 namespace vrli {
+namespace {
+constexpr vrlis::Method kEquiangular = vrlis::CameraSamplers::Of<vrlis::EquiangularEntry>();
+}  // namespace
 
 Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) const {
   const HomogeneousMedium& m = scene_.medium;
@@ -16,11 +20,14 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
       if (skip_first_medium) {
         beta *= std::exp(-m.SigmaT() * iv.Length());
       } else {
+        // Light scattered once on this segment, estimated over the whole segment: a point light
+        // seen from a free-flight vertex would weigh I / r^2, of infinite variance next to the
+        // light, while equiangular sampling cancels the 1 / r^2 (Kulla and Fajardo 2012).
+        L += beta * SingleScattering(kEquiangular, scene_, CameraSegment{ray, iv}, rng);
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
-        if (d < iv.b) {  // a medium vertex
+        if (d < iv.b) {  // a medium vertex: the path goes on from it
           beta *= m.Albedo();
           Vec3f p = ray(d);
-          L += beta * DirectMedium(scene_, p, ray.d);
           float u1 = rng.Uniform(), u2 = rng.Uniform();
           ray = {p, SamplePhase(m.g, ray.d, u1, u2)};
           scattered = true;

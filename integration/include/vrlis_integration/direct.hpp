@@ -1,23 +1,10 @@
 #pragma once
-// Next-event estimation: light arriving at a point straight from every light, times
+// Next-event estimation at a surface: light arriving straight from every light, times
 // transmittance and visibility (every light is a delta light, so each is connected once).
+// In the medium, single scattering along a whole segment replaces it (gather.hpp).
 #include "scene.hpp"
 
 namespace vrli {
-
-// Sum over lights of Phase(g, wi . d) Li: the in-scattered radiance per unit sigma_s at a
-// medium point p, towards a camera ray travelling along d (light leaves p along -d).
-inline Spectrum DirectMedium(const Scene& scene, Vec3f p, Vec3f d) {
-  Spectrum sum;
-  auto add = [&](const std::optional<LightSample>& ls) {
-    if (!ls) return;
-    float tr = scene.Connect(p, ls->source);
-    if (tr > 0) sum += ls->value * (Phase(scene.medium.g, Dot(ls->wi, d)) * tr);
-  };
-  for (const PointLight& l : scene.lights.points) add(SampleLight(l, p));
-  for (const CollimatedRect& l : scene.lights.rects) add(SampleLight(l, p));
-  return sum;
-}
 
 // Reflected radiance at a diffuse point p with normal nf (facing the viewer).
 inline Spectrum DirectSurface(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo) {

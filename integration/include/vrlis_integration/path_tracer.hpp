@@ -1,6 +1,7 @@
 #pragma once
 // A volumetric path tracer with next-event estimation: free-flight distance sampling,
-// phase-function and cosine sampling, Russian roulette. It is the reference renderer, and
+// phase-function and cosine sampling, Russian roulette; in the medium, light scattered once
+// on a segment is estimated along the whole segment by equiangular sampling. It is the reference renderer, and
 // the VRL renderer's `indirect` part continues paths with it.
 #include "scene.hpp"
 #include "transport.hpp"
