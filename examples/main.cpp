@@ -13,9 +13,8 @@
 #include <string>
 
 #include <vrlis_integration/renderer.hpp>
-
-#include "image_io.hpp"
-#include "scenes.hpp"
+#include <vrlis_scenes/image_io.hpp>
+#include <vrlis_scenes/scenes.hpp>
 
 namespace {
 

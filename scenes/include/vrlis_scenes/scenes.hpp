@@ -1,5 +1,5 @@
 #pragma once
-// The four scenes of docs/scenes.md (shared/docs), built on Embree.
+// The four comparison scenes of docs/scenes.md, built on Embree (a private detail of this target).
 #include <array>
 #include <optional>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "scenes.hpp"
+#include "vrlis_scenes/scenes.hpp"
 
 #include <memory>
 
