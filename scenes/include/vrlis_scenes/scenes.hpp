@@ -19,6 +19,7 @@ struct MediumOverrides {
 struct BuiltScene {
   vrli::Scene scene;
   vrli::TransportSettings transport;  // what the scene renders by default
+  bool has_surfaces = true;           // false: nothing for a medium-to-surface gather to land on
 };
 
 // Empty for an unknown name.
