@@ -14,7 +14,8 @@
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
-#include "image_io.hpp"
+#include <vrlis_scenes/image_io.hpp>
+
 #include "image_stats.hpp"
 #include "study.hpp"
 

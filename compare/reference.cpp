@@ -1,3 +1,5 @@
+#include <vrlis_scenes/image_io.hpp>
+
 #include "reference.hpp"
 
 #include <chrono>
@@ -7,7 +9,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "image_io.hpp"
 #include "image_stats.hpp"
 
 namespace vrl_compare {

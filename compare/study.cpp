@@ -7,10 +7,10 @@
 #include <stdexcept>
 
 #include <vrlis_integration/renderer.hpp>
+#include <vrlis_scenes/scenes.hpp>
 
 #include "image_stats.hpp"
 #include "reference.hpp"
-#include "scenes.hpp"
 
 namespace vrl_compare {
 

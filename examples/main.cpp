@@ -5,17 +5,20 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
 
 #include <vrlis_integration/renderer.hpp>
-
-#include "image_io.hpp"
-#include "scenes.hpp"
+#include <vrlis_scenes/image_io.hpp>
+#include <vrlis_scenes/scenes.hpp>
 
 namespace {
 
@@ -40,13 +43,39 @@ std::string SamplerNames() {
   return s;
 }
 
-void Progress(double fraction, int passes) {
+std::string Clock(double seconds) {
+  long s = std::lround(std::max(0.0, seconds));
+  char text[32];
+  std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
+  return text;
+}
+
+// One line redrawn in place: bar, percentage, passes, elapsed time and the time left.
+void Progress(double fraction, int passes, double elapsed) {
   const int width = 40;
-  int filled = static_cast<int>(std::lround(std::min(1.0, fraction) * width));
-  std::fprintf(stderr, "\r[%s%s] %3d%%  %d passes", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+  fraction = std::clamp(fraction, 0.0, 1.0);
+  int filled = static_cast<int>(std::lround(fraction * width));
+  std::string eta = fraction > 0 ? Clock(elapsed / fraction - elapsed) : "?";
+  std::fprintf(stderr, "\r[%s%s] %3d%%  %d passes  %s elapsed, %s left ",
+               std::string(static_cast<std::size_t>(filled), '#').c_str(),
                std::string(static_cast<std::size_t>(width - filled), ' ').c_str(),
-               static_cast<int>(std::lround(100 * std::min(1.0, fraction))), passes);
+               static_cast<int>(std::lround(100 * fraction)), passes, Clock(elapsed).c_str(), eta.c_str());
   std::fflush(stderr);
+}
+
+// An EXR path from --out: ".exr" appended when the name has no extension (or one that is not
+// an image's); empty for another image format, which this renderer does not write.
+std::string ExrPath(const std::string& out) {
+  auto ends = [&](const std::string& ext) {
+    if (out.size() <= ext.size()) return false;
+    for (std::size_t i = 0; i < ext.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(out[out.size() - ext.size() + i])) != ext[i]) return false;
+    return true;
+  };
+  if (ends(".exr")) return out;
+  for (const char* ext : {".png", ".jpg", ".jpeg", ".hdr", ".pfm", ".ppm", ".tif", ".tiff", ".bmp", ".json"})
+    if (ends(ext)) return {};
+  return out + ".exr";
 }
 
 double Rmse(const vrli::Film& a, const vrli::Film& b) {
@@ -67,7 +96,7 @@ int main(int argc, char** argv) {
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1;
-  bool no_jitter = false, no_caustics = false, quiet = false;
+  bool no_jitter = false, no_caustics = false, quiet = false, json = false;
 
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
                "OpenEXR), a tonemapped sRGB PNG and a JSON summary beside it. Usage errors exit with code 2."};
@@ -89,13 +118,15 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "Random seed: the same seed gives the same image at any thread count")
       ->capture_default_str();
   app.add_option("--threads", threads, "Worker threads (0: all cores)")->capture_default_str();
-  app.add_option("--out", out, "Output EXR path; the .png and .json share its stem")->capture_default_str();
+  app.add_option("--out", out, "Output EXR path (.exr is appended if missing); the .png and .json share its stem")
+      ->capture_default_str();
   app.add_option("--reference", reference, "A converged EXR of the same size: report the RMSE against it");
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)");
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");
   app.add_flag("--no-caustics", no_caustics, "Stop light paths at a specular surface met before any "
                                              "scattering (what a path tracer with point lights can render)");
-  app.add_flag("--quiet", quiet, "No progress bar");
+  app.add_flag("--quiet", quiet, "No progress bar and no summary line");
+  app.add_flag("--json", json, "Print the JSON summary (also written beside the image) instead of the summary line");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -122,6 +153,8 @@ int main(int argc, char** argv) {
   if (exposure && !(*exposure > 0 && std::isfinite(*exposure))) return Fail("--exposure must be positive");
   auto built = vrl_render::BuildScene(scene_name, {g, sigma_s, sigma_a});
   if (!built) return Fail("unknown scene '" + scene_name + "' (expected " + JoinNames() + ")");
+  if (gather == "m2s" && !built->has_surfaces)
+    return Fail("--gather m2s: scene '" + scene_name + "' has no surfaces to gather at (use m2m or all)");
   std::optional<vrli::Film> ref;
   if (!reference.empty()) {
     std::string err;
@@ -129,8 +162,10 @@ int main(int argc, char** argv) {
     if (!ref) return Fail("cannot read reference '" + reference + "': " + err);
     if (ref->width != width || ref->height != height) return Fail("reference '" + reference + "' is not " + std::to_string(width) + "x" + std::to_string(height));
   }
-  std::string stem = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0 ? out.substr(0, out.size() - 4) : out;
-  const std::string png = stem + ".png", json_path = stem + ".json";
+  const std::string exr = ExrPath(out);
+  if (exr.empty()) return Fail("--out '" + out + "' names another image format: vrl_render writes an .exr");
+  out = exr;
+  const std::string stem = out.substr(0, out.size() - 4), png = stem + ".png", json_path = stem + ".json";
   for (const std::string& p : {out, png, json_path})
     if (!vrl_render::CanWrite(p)) return Fail("cannot write output file '" + p + "'");
 
@@ -142,6 +177,8 @@ int main(int argc, char** argv) {
   settings.transport = built->transport;
   settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
+  std::atomic<int> rows_done{0};
+  settings.rows_done = &rows_done;
   if (gather != "all") {
     settings.transport.medium_to_medium = gather == "m2m";
     settings.transport.medium_to_surface = gather == "m2s";
@@ -162,16 +199,33 @@ int main(int argc, char** argv) {
   double pass_seconds = 0;
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  // The bar is redrawn from its own thread so that it moves within a pass (rows_done).
+  std::atomic<int> passes_done{0};
+  std::atomic<bool> finished{false};
+  std::thread progress;
+  if (bar)
+    progress = std::thread([&] {
+      for (bool last = false; !last;) {
+        last = finished.load();
+        double within = double(rows_done.load(std::memory_order_relaxed)) / height;
+        double t = elapsed();
+        Progress(timed ? t / seconds : (passes_done.load() + std::min(within, 1.0)) / spp, passes_done.load(), t);
+        if (!last) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      }
+      std::fprintf(stderr, "\n");
+    });
   for (int pass = 0;; ++pass) {
     if (timed ? (pass > 0 && elapsed() >= seconds) : pass >= spp) break;
     vrli::PassStats stats;
+    rows_done.store(0);
     acc.Add(renderer->RenderPass(seed, static_cast<std::uint64_t>(pass), &stats));
+    passes_done.store(pass + 1);
     vrl_count += stats.vrls;
     gathers += stats.gathers;
     pass_seconds += stats.seconds;
-    if (bar) Progress(timed ? elapsed() / seconds : double(pass + 1) / spp, pass + 1);
   }
-  if (bar) std::fprintf(stderr, "\n");
+  finished.store(true);
+  if (progress.joinable()) progress.join();
   const double wall = elapsed();
   vrli::Film image = acc.Mean();
 
@@ -191,6 +245,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "vrl_render: error: %s\n", err.c_str());
     return 1;
   }
-  if (!quiet) std::printf("%s\n", summary.dump().c_str());
+  if (json)
+    std::printf("%s\n", summary.dump().c_str());
+  else if (!quiet)
+    std::printf("%s: %s, %s, %dx%d, %d passes in %.1f s (%.3g VRL gathers/s) -> %s, %s, %s\n", scene_name.c_str(),
+                integrator.c_str(), sampler.c_str(), width, height, acc.passes(), wall,
+                pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0, out.c_str(), png.c_str(), json_path.c_str());
   return 0;
 }

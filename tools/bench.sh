@@ -8,21 +8,21 @@
 # VRLIS_BENCH_NO_DOCS=1).
 #
 #   tools/bench.sh [outdir=out/bench]
-# Environment: VRLIS_BENCH_BUILD (build dir, default build-bench), VRLIS_BENCH_REPS (5),
+# Environment: VRLIS_BENCH_BUILD (a configured build dir; default: the `release` preset's,
+# build/), VRLIS_BENCH_REPS (5),
 # VRLIS_BENCH_MIN_TIME (0.1 s per repetition), VRLIS_ACCURACY_PAIRS (256).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/bench}
-build=${VRLIS_BENCH_BUILD:-build-bench}
+build=${VRLIS_BENCH_BUILD:-build}
 reps=${VRLIS_BENCH_REPS:-5}
 min_time=${VRLIS_BENCH_MIN_TIME:-0.1}
 pairs=${VRLIS_ACCURACY_PAIRS:-256}
 
 tools/deps.sh
 if [ -z "${VRLIS_BENCH_BUILD:-}" ]; then  # (the CMake `bench` target passes its own, configured build)
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_WERROR=ON -DVRLIS_BUILD_EXAMPLES=OFF \
-        -DVRLIS_BUILD_TESTS=OFF >/dev/null
-  cmake --build "$build" --target vrlis_bench vrlis_accuracy
+  cmake --preset release >/dev/null
+  cmake --build --preset release --target vrlis_bench vrlis_accuracy
 fi
 mkdir -p "$out"
 

@@ -1,21 +1,24 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer target fuzz/fuzz_samplers.cpp with clang++ (-fsanitize=fuzzer,address,undefined)
-# and runs it on the committed corpus in fuzz/corpus for a fixed time; new interesting inputs
-# go to build-fuzz/corpus (merge them into fuzz/corpus with -merge=1 to keep them).
+# Builds the libFuzzer target fuzz/fuzz_samplers.cpp (the `fuzz` preset: clang++,
+# -fsanitize=fuzzer,address,undefined) and runs it on the committed corpus in fuzz/corpus for
+# a fixed time; new interesting inputs go to build-fuzz/corpus (merge them into fuzz/corpus
+# with -merge=1 to keep them).
 # fuzz/regressions holds one input per class of violation found so far (not run by default:
-# `tools/fuzz.sh regressions` replays them and lists the ones that still fail).
+# `tools/fuzz.sh regressions` replays them and lists the ones that still fail; `ctest --preset
+# fuzz` replays them and the corpus as a gate).
 # Usage: tools/fuzz.sh [seconds=60] [extra libFuzzer flags...] | tools/fuzz.sh regressions
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"; shift || true
 out=build-fuzz
+cmake --preset fuzz >/dev/null
+cmake --build --preset fuzz
 mkdir -p "$out/corpus" "$out/artifacts"
-clang++ -std=c++17 -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-  -Wall -Wextra -Wpedantic -Werror -Iinclude fuzz/fuzz_samplers.cpp -o "$out/fuzz_samplers"
+bin="$out/fuzz/fuzz_samplers"
 if [ "$seconds" = regressions ]; then
   failed=0
   for f in fuzz/regressions/*; do
-    if msg=$("$out/fuzz_samplers" "$f" 2>&1); then echo "fixed:   $(basename "$f")"; else
+    if msg=$("$bin" "$f" 2>&1); then echo "fixed:   $(basename "$f")"; else
       failed=$((failed + 1)); echo "FAILS:   $(basename "$f"): $(echo "$msg" | grep -m1 -E 'CONTRACT|runtime error|ERROR')"; fi
   done
   echo "fuzz regressions: $failed of $(ls fuzz/regressions | wc -l) still fail"
@@ -23,7 +26,7 @@ if [ "$seconds" = regressions ]; then
 fi
 log="$out/fuzz.log"
 set +e
-"$out/fuzz_samplers" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$out/artifacts/" \
+"$bin" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$out/artifacts/" \
   "$@" "$out/corpus" fuzz/corpus 2>&1 | tee "$log" | grep -E '^(#[0-9]+ *(INITED|DONE|pulse)|CONTRACT|==|SUMMARY|stat::number_of_executed_units)' 
 rc=${PIPESTATUS[0]}
 set -e

@@ -6,10 +6,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_SCENE=${1:-30}
 SIZE=${2:-256}
-BUILD=${BUILD:-build-render}
-cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_WERROR=ON -DVRLIS_BUILD_BENCH=OFF >/dev/null
-cmake --build "$BUILD" --target vrl_render >/dev/null
-BIN="$BUILD/examples/vrl_render"
+tools/deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release --target vrl_render >/dev/null
+BIN=build/examples/vrl_render
 OUT=docs/scenes
 mkdir -p "$OUT"
 common=(--width "$SIZE" --height "$SIZE" --time "$SECONDS_PER_SCENE" --vrls 64 --seed 1 --sampler cauchy-sum --quiet)

@@ -1,20 +1,15 @@
 #!/usr/bin/env bash
-# Builds vrlis_stability (tests/stability) and writes the stability table of the samplers as
-# Markdown to stdout and to docs/stability.md (with the date, machine and command).
-# Usage: tools/stability.sh [build dir=build-stab] [samples=100000]
+# Builds vrlis_stability (tests/stability; the `release` preset) and writes the stability
+# table of the samplers as Markdown to stdout and to docs/stability.md (with the date, machine
+# and command).
+# Usage: tools/stability.sh [samples=100000]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build="${1:-build-stab}"
-samples="${2:-100000}"
-if cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_WERROR=ON -DVRLIS_BUILD_BENCH=OFF \
-  -DVRLIS_BUILD_EXAMPLES=OFF >/dev/null 2>&1; then
-  cmake --build "$build" --target vrlis_stability >/dev/null
-  tool=$(find "$build" -name vrlis_stability -type f -perm -u+x | head -1)
-else  # the project does not configure (another area's CMake): build the tool directly
-  mkdir -p "$build/manual"
-  c++ -std=c++17 -O2 -Wall -Wextra -Wpedantic -Werror -Iinclude tests/stability/stability_tool.cpp -o "$build/manual/vrlis_stability"
-  tool="$build/manual/vrlis_stability"
-fi
+samples="${1:-100000}"
+tools/deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release --target vrlis_stability >/dev/null
+tool=build/tests/stability/vrlis_stability
 {
   echo "# Stability of the samplers under adversarial input"
   echo

@@ -19,13 +19,15 @@ template <typename F>
 Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f) {
   Film film(s.width, s.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, s.height), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y)
+    for (int y = rows.begin(); y < rows.end(); ++y) {
       for (int x = 0; x < s.width; ++x) {
         Rng rng(seed, pass, static_cast<std::uint64_t>(y) * s.width + x, StreamPurpose::Camera);
         float jx = s.jitter ? rng.Uniform() : 0.5f, jy = s.jitter ? rng.Uniform() : 0.5f;
         Ray ray = scene.camera.Generate(x + jx, y + jy, s.width, s.height);
         film.at(x, y) = f(ray, rng);
       }
+      if (s.rows_done) s.rows_done->fetch_add(1, std::memory_order_relaxed);
+    }
   });
   return film;
 }

@@ -1,5 +1,6 @@
 // Bad command lines: a one-line message naming the problem, exit code 2, and no output
-// file. A good command line, for contrast, exits 0 and writes all three files.
+// file. A good command line, for contrast, exits 0 and writes all three files; --out gets
+// .exr appended when it has none, and stdout carries JSON only with --json.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,18 +14,23 @@ namespace {
 
 struct Run {
   int code;
-  std::string err;
+  std::string err, out;
 };
 
-Run Render(const std::string& args) {
-  std::string err_path = "bad_input_" + std::to_string(getpid()) + ".err";
-  std::string cmd = std::string(VRL_RENDER) + " " + args + " >/dev/null 2>" + err_path;
-  int status = std::system(cmd.c_str());
-  std::ifstream in(err_path);
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path);
   std::stringstream ss;
   ss << in.rdbuf();
-  std::remove(err_path.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+  std::remove(path.c_str());
+  return ss.str();
+}
+
+Run Render(const std::string& args) {
+  std::string stem = "bad_input_" + std::to_string(getpid());
+  std::string cmd = std::string(VRL_RENDER) + " " + args + " >" + stem + ".out 2>" + stem + ".err";
+  int status = std::system(cmd.c_str());
+  std::string err = Slurp(stem + ".err"), out = Slurp(stem + ".out");
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, err, out};
 }
 
 bool Exists(const std::string& p) { return std::ifstream(p).good(); }
@@ -54,6 +60,7 @@ TEST_CASE("bad input exits with code 2, one line, and writes nothing", "[render]
       {"--scene cube --vrls 0", "--vrls"},
       {"--scene cube --reference /nonexistent-dir/ref.exr", "cannot read reference"},
       {"--scene cube --no-such-option", "no-such-option"},
+      {"--scene bidirectional --gather m2s", "no surfaces"},
       {"", "--scene"},
   };
   for (const Case& c : cases) {
@@ -70,6 +77,11 @@ TEST_CASE("bad input exits with code 2, one line, and writes nothing", "[render]
   CHECK(unwritable.code == 2);
   CHECK(unwritable.err.find("cannot write output file") != std::string::npos);
   CHECK_FALSE(Exists("/nonexistent-dir/x.exr"));
+  Run png = Render(base_no_out + "--scene cube --out " + out + ".png");
+  CHECK(png.code == 2);
+  CHECK(png.err.find("--out") != std::string::npos);
+  CHECK_FALSE(Exists(out + ".png"));
+  CHECK_FALSE(Exists(out + ".exr"));
   Run ok = Render(base + "--scene cube");
   CHECK(ok.code == 0);
   CHECK(Exists(out + ".exr"));
@@ -81,5 +93,25 @@ TEST_CASE("bad input exits with code 2, one line, and writes nothing", "[render]
   CHECK(wrong.code == 2);
   CHECK(wrong.err.find("reference") != std::string::npos);
   CHECK_FALSE(Exists("other.exr"));
+  for (const char* ext : {".exr", ".png", ".json"}) std::remove((out + ext).c_str());
+}
+
+TEST_CASE("output names get .exr appended and stdout is JSON only on request", "[render][cli]") {
+  const std::string out = "cli_out_" + std::to_string(getpid());
+  const std::string args = "--scene cube --width 8 --height 8 --spp 1 --vrls 2 --out " + out;
+  Run human = Render(args);
+  CHECK(human.code == 0);
+  for (const char* ext : {".exr", ".png", ".json"}) CHECK(Exists(out + ext));
+  CHECK_FALSE(Exists(out));
+  CHECK(std::count(human.out.begin(), human.out.end(), '\n') == 1);
+  CHECK(human.out.rfind("cube: ", 0) == 0);
+  CHECK(human.out.find(out + ".exr") != std::string::npos);
+  Run json = Render(args + " --json");
+  CHECK(json.code == 0);
+  CHECK(json.out.rfind("{", 0) == 0);
+  CHECK(json.out.find("\"passes\":1") != std::string::npos);
+  Run quiet = Render(args + " --quiet");
+  CHECK(quiet.code == 0);
+  CHECK(quiet.out.empty());
   for (const char* ext : {".exr", ".png", ".json"}) std::remove((out + ext).c_str());
 }

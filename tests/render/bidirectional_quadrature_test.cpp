@@ -8,8 +8,9 @@
 
 #include <cstdio>
 
+#include <vrlis_scenes/scenes.hpp>
+
 #include "block_stats.hpp"
-#include "scenes.hpp"
 
 namespace {
 

@@ -5,7 +5,8 @@
 #include <catch2/catch.hpp>
 #include <cstring>
 
-#include "scenes.hpp"
+#include <vrlis_scenes/scenes.hpp>
+
 #include "vrlis_integration/renderer.hpp"
 
 namespace {

@@ -5,8 +5,9 @@
 
 #include <cstdio>
 
+#include <vrlis_scenes/scenes.hpp>
+
 #include "block_stats.hpp"
-#include "scenes.hpp"
 
 namespace {
 

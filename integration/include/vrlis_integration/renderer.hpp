@@ -3,6 +3,7 @@
 // and for the VRL renderer a fresh set of light paths) from (seed, pass) alone, so that a
 // driver can interleave passes of several samplers, or renderers, in one process and the
 // result does not depend on the thread count.
+#include <atomic>
 #include <cstdint>
 
 #include "film.hpp"
@@ -21,6 +22,8 @@ struct RenderSettings {
   int vrls_per_pass = 64;  // light paths per pass
   bool jitter = true;      // false: every sample through the pixel centre
   TransportSettings transport;
+  // If set, incremented after each finished image row (any thread), for progress displays.
+  std::atomic<int>* rows_done = nullptr;
 };
 
 class Renderer {

@@ -1,4 +1,4 @@
-#include "image_io.hpp"
+#include "vrlis_scenes/image_io.hpp"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>

@@ -1,5 +1,5 @@
 #pragma once
-// The four scenes of docs/scenes.md (shared/docs), built on Embree.
+// The four comparison scenes of docs/scenes.md, built on Embree (a private detail of this target).
 #include <array>
 #include <optional>
 #include <string_view>
@@ -19,6 +19,7 @@ struct MediumOverrides {
 struct BuiltScene {
   vrli::Scene scene;
   vrli::TransportSettings transport;  // what the scene renders by default
+  bool has_surfaces = true;           // false: nothing for a medium-to-surface gather to land on
 };
 
 // Empty for an unknown name.

@@ -21,6 +21,7 @@ class EmbreeGeometry : public vrli::Geometry {
   void AddBox(vrli::Vec3f lo, vrli::Vec3f hi, int material);
   void AddSphere(vrli::Vec3f center, float radius, int material);
   void Commit();  // after the last Add
+  bool Empty() const { return quad_vertices_.empty() && spheres_.empty(); }
 
   bool Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHit* hit) const override;
   bool Occluded(vrli::Vec3f p0, vrli::Vec3f p1) const override;

@@ -1,4 +1,4 @@
-#include "scenes.hpp"
+#include "vrlis_scenes/scenes.hpp"
 
 #include <memory>
 
@@ -108,6 +108,7 @@ std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverride
   BuiltScene b;
   builder(b, *geometry);
   geometry->Commit();
+  b.has_surfaces = !geometry->Empty();
   b.scene.geometry = geometry;
   vrli::HomogeneousMedium& m = b.scene.medium;
   if (o.g) m.g = *o.g;
