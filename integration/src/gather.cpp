@@ -11,12 +11,12 @@ vrlis::Medium<float> MediumOf(const HomogeneousMedium& m) { return {m.g, m.sigma
 vrlis::RaySegment<float> SegmentOf(const CameraSegment& seg) { return {seg.ray.o, seg.ray.d, seg.iv.a, seg.iv.b}; }
 vrlis::VrlSegment<float> SegmentOf(const Vrl& vrl) { return {vrl.origin, vrl.dir, vrl.length}; }
 
-// The library's weight assumes the medium fills the connection; the scene's medium may not
-// (a bounded medium), so its own visibility x transmittance replaces the modelled one.
+// The library's weight models the connection's transmittance in a medium that fills it;
+// a bounded medium may not, and then the scene's own transmittance replaces it.
 float Connect(const Scene& scene, const vrlis::GatherSample<float>& s) {
-  if (!s.contributes()) return 0;
-  float tr = scene.Connect(s.camera_point, s.light_point);
-  return tr > 0 ? s.weight * (tr / s.transmittance) : 0.f;
+  if (!s.contributes() || scene.geometry->Occluded(s.camera_point, s.light_point)) return 0;
+  if (!scene.medium.bounded) return s.weight;
+  return s.weight * (scene.Transmittance(s.camera_point, s.light_point) / s.transmittance);
 }
 
 }  // namespace

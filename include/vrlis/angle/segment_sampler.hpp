@@ -33,13 +33,8 @@ class SegmentSampler {
 
   template <typename... FitArgs>
   explicit SegmentSampler(const SegmentQuery<Real>& q, FitArgs&&... fit_args)
-      : error_(Validate(q)),
-        domain_(error_ == QueryError::None ? q : Fallback()),
-        usable_(valid() && domain_.width() >= std::numeric_limits<Real>::min() &&
-                RepresentableLength(domain_.tmax() - domain_.tmin())),
-        dist_(usable_ ? q : Fallback(), usable_ ? domain_ : AngleDomain<Real>(Fallback()),
-              std::forward<FitArgs>(fit_args)...) {}
-  // (Distributions copy what they need from the domain; they keep no reference to it.)
+      : SegmentSampler(Checked{Validate(q)}, q, std::forward<FitArgs>(fit_args)...) {}
+  SegmentSampler(ValidQuery, const SegmentQuery<Real>& q) : SegmentSampler(Checked{QueryError::None}, q) {}
 
   bool valid() const { return error_ == QueryError::None; }
   QueryError error() const { return error_; }
@@ -71,6 +66,19 @@ class SegmentSampler {
   }
 
  private:
+  struct Checked {
+    QueryError error;
+  };
+  template <typename... FitArgs>
+  SegmentSampler(Checked checked, const SegmentQuery<Real>& q, FitArgs&&... fit_args)
+      : error_(checked.error),
+        domain_(error_ == QueryError::None ? q : Fallback()),
+        usable_(valid() && domain_.width() >= std::numeric_limits<Real>::min() &&
+                RepresentableLength(domain_.tmax() - domain_.tmin())),
+        dist_(usable_ ? q : Fallback(), usable_ ? domain_ : AngleDomain<Real>(Fallback()),
+              std::forward<FitArgs>(fit_args)...) {}
+  // (Distributions copy what they need from the domain; they keep no reference to it.)
+
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
   // Fitting on invalid input could reach undefined behaviour (NaN to int); fit this instead.
   static SegmentQuery<Real> Fallback() {

@@ -3,8 +3,6 @@
 // one surface point, or one point light) against one VRL, in a homogeneous medium. These
 // three queries are the library's one model of a gather configuration; the samplers' own
 // queries (SegmentQuery, VrlPointQuery) are built from them.
-#include <initializer_list>
-
 #include "query.hpp"
 
 namespace vrlis {
@@ -59,13 +57,13 @@ struct PointLightGatherQuery {
 };
 
 namespace detail {
+// x * 0 is 0 for finite x and NaN otherwise: one comparison checks every input.
 template <typename Real>
-bool AllFinite(std::initializer_list<Vec3<Real>> vs, std::initializer_list<Real> xs) {
-  Real zero = 0;  // x * 0 is 0 for finite x and NaN otherwise
-  for (Vec3<Real> v : vs) zero += Real(0) * (v.x + v.y + v.z);
-  for (Real x : xs) zero += Real(0) * x;
-  return zero == 0;
-}
+Real ZeroIfFinite(Vec3<Real> v) { return Real(0) * (v.x + v.y + v.z); }
+template <typename Real>
+Real ZeroIfFinite(Real x) { return Real(0) * x; }
+template <typename... Values>
+bool AllFinite(Values... values) { return (ZeroIfFinite(values) + ...) == 0; }
 template <typename Real>
 QueryError ValidateMedium(const Medium<Real>& m) {
   if (!IsAsymmetry(m.g)) return QueryError::InvalidAsymmetry;
@@ -89,43 +87,41 @@ QueryError ValidateVrl(const VrlSegment<Real>& v) {
   if (!InRange(v.origin) || v.length > MaxCoordinate<Real>()) return QueryError::OutOfRange;
   return QueryError::None;
 }
-// The first error of a list, in order.
-inline QueryError FirstError(std::initializer_list<QueryError> errors) {
-  for (QueryError e : errors)
-    if (e != QueryError::None) return e;
-  return QueryError::None;
-}
 }  // namespace detail
 
 template <typename Real>
 QueryError Validate(const MediumGatherQuery<Real>& q) {
   const auto& c = q.camera;
   const auto& v = q.vrl;
-  if (!detail::AllFinite({c.origin, c.dir, v.origin, v.dir}, {c.tmin, v.length, q.medium.g, q.medium.sigma_s,
-                                                               q.medium.sigma_t}) ||
+  if (!detail::AllFinite(c.origin, c.dir, v.origin, v.dir, c.tmin, v.length, q.medium.g, q.medium.sigma_s,
+                         q.medium.sigma_t) ||
       std::isnan(c.tmax))
     return QueryError::NonFinite;
-  return detail::FirstError({detail::ValidateSegment(c), detail::ValidateVrl(v), detail::ValidateMedium(q.medium)});
+  if (QueryError e = detail::ValidateSegment(c); e != QueryError::None) return e;
+  if (QueryError e = detail::ValidateVrl(v); e != QueryError::None) return e;
+  return detail::ValidateMedium(q.medium);
 }
 
 template <typename Real>
 QueryError Validate(const SurfaceGatherQuery<Real>& q) {
   const auto& v = q.vrl;
-  if (!detail::AllFinite({q.point, q.normal, v.origin, v.dir}, {v.length, q.medium.g, q.medium.sigma_s, q.medium.sigma_t}))
+  if (!detail::AllFinite(q.point, q.normal, v.origin, v.dir, v.length, q.medium.g, q.medium.sigma_s, q.medium.sigma_t))
     return QueryError::NonFinite;
   if (!detail::IsUnit(q.normal)) return QueryError::NotUnitDirection;
   if (!detail::InRange(q.point)) return QueryError::OutOfRange;
-  return detail::FirstError({detail::ValidateVrl(v), detail::ValidateMedium(q.medium)});
+  if (QueryError e = detail::ValidateVrl(v); e != QueryError::None) return e;
+  return detail::ValidateMedium(q.medium);
 }
 
 template <typename Real>
 QueryError Validate(const PointLightGatherQuery<Real>& q) {
   const auto& c = q.camera;
-  if (!detail::AllFinite({c.origin, c.dir, q.light}, {c.tmin, q.medium.g, q.medium.sigma_s, q.medium.sigma_t}) ||
+  if (!detail::AllFinite(c.origin, c.dir, q.light, c.tmin, q.medium.g, q.medium.sigma_s, q.medium.sigma_t) ||
       std::isnan(c.tmax))
     return QueryError::NonFinite;
   if (!detail::InRange(q.light)) return QueryError::OutOfRange;
-  return detail::FirstError({detail::ValidateSegment(c), detail::ValidateMedium(q.medium)});
+  if (QueryError e = detail::ValidateSegment(c); e != QueryError::None) return e;
+  return detail::ValidateMedium(q.medium);
 }
 
 }  // namespace vrlis

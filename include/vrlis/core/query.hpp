@@ -58,6 +58,10 @@ struct SegmentSample {
   Real t = 0, pdf = 0;
 };
 
+// Tag: the caller has validated the query (Validate(q) == QueryError::None), e.g. because
+// it derived it from a validated gather query; the sampler skips validating it again.
+struct ValidQuery {};
+
 enum class QueryError {
   None,
   NonFinite,          // a NaN or infinity where a finite number is required

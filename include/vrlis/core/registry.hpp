@@ -10,6 +10,8 @@
 #include <optional>
 #include <string_view>
 
+#include "query.hpp"
+
 namespace vrlis {
 
 template <typename Registry>
@@ -35,13 +37,13 @@ struct RealOf<Query<R>> {
   using type = R;
 };
 
-template <typename Real, typename Query, typename F, typename Entry, typename... Rest>
-decltype(auto) Dispatch(int index, const Query& q, F& f) {
+template <typename Real, typename F, typename Entry, typename... Rest, typename... Args>
+decltype(auto) Dispatch(int index, F& f, const Args&... args) {
   if constexpr (sizeof...(Rest) == 0) {
-    return f(typename Entry::template Sampler<Real>(q));
+    return f(typename Entry::template Sampler<Real>(args...));
   } else {
-    if (index == 0) return f(typename Entry::template Sampler<Real>(q));
-    return Dispatch<Real, Query, F, Rest...>(index - 1, q, f);
+    if (index == 0) return f(typename Entry::template Sampler<Real>(args...));
+    return Dispatch<Real, F, Rest...>(index - 1, f, args...);
   }
 }
 }  // namespace detail
@@ -74,7 +76,12 @@ struct Registry {
   // Builds the chosen sampler from q and returns f(sampler); f must return one type for all.
   template <typename Query, typename F>
   static decltype(auto) With(Choice c, const Query& q, F&& f) {
-    return detail::Dispatch<typename detail::RealOf<Query>::type, Query, F, Entries...>(c.index(), q, f);
+    return detail::Dispatch<typename detail::RealOf<Query>::type, F, Entries...>(c.index(), f, q);
+  }
+  // The same for a query the caller has validated (no second validation).
+  template <typename Query, typename F>
+  static decltype(auto) With(Choice c, ValidQuery, const Query& q, F&& f) {
+    return detail::Dispatch<typename detail::RealOf<Query>::type, F, Entries...>(c.index(), f, ValidQuery{}, q);
   }
 };
 

@@ -41,7 +41,7 @@ GatherSample<Real> SampleMediumGather(GatherMethod method, const MediumGatherQue
     SegmentSample<Real> v = step_one.sample_pdf(u_vrl);
     if (!detail::Usable(v)) return GatherSample<Real>{};
     Vec3<Real> y = q.vrl.at(v.t);
-    return CameraSamplers::With(method.camera, CameraStepQuery(q, y), [&](const auto& step_two) {
+    return CameraSamplers::With(method.camera, ValidQuery{}, CameraStepQuery(q, y), [&](const auto& step_two) {
       SegmentSample<Real> t = step_two.sample_pdf(u_camera);
       if (!detail::Usable(t)) return GatherSample<Real>{};
       GatherSample<Real> s;

@@ -38,7 +38,7 @@ Real PointLightGatherIntegrand(const PointLightGatherQuery<Real>& q, Real t, Rea
 template <typename Real>
 GatherSample<Real> SamplePointLightGather(Method method, const PointLightGatherQuery<Real>& q, Real u) {
   if (Validate(q) != QueryError::None) return {};
-  return CameraSamplers::With(method, CameraStepQuery(q), [&](const auto& sampler) {
+  return CameraSamplers::With(method, ValidQuery{}, CameraStepQuery(q), [&](const auto& sampler) {
     SegmentSample<Real> t = sampler.sample_pdf(u);
     if (!detail::Usable(t)) return GatherSample<Real>{};
     GatherSample<Real> s;

@@ -43,7 +43,7 @@ Real SurfaceGatherIntegrand(const SurfaceGatherQuery<Real>& q, Real v, Real* tra
 template <typename Real>
 GatherSample<Real> SampleSurfaceGather(Method method, const SurfaceGatherQuery<Real>& q, Real u) {
   if (Validate(q) != QueryError::None) return {};
-  return CameraSamplers::With(method, VrlStepQuery(q), [&](const auto& sampler) {
+  return CameraSamplers::With(method, ValidQuery{}, VrlStepQuery(q), [&](const auto& sampler) {
     SegmentSample<Real> v = sampler.sample_pdf(u);
     if (!detail::Usable(v)) return GatherSample<Real>{};
     GatherSample<Real> s;
