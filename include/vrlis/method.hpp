@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/registry.hpp"
+#include "samplers/auto_sampler.hpp"
 #include "samplers/cauchy_mixture.hpp"
 #include "samplers/cauchy_sum.hpp"
 #include "samplers/equiangular.hpp"
@@ -16,7 +17,8 @@
 namespace vrlis {
 
 // Step two: a point on a segment seen from a point (built from a SegmentQuery).
-using CameraSamplers = Registry<EquiangularEntry, NovakEntry, CauchySumEntry, CauchyMixtureEntry, FullProductEntry>;
+using CameraSamplers =
+    Registry<EquiangularEntry, NovakEntry, CauchySumEntry, CauchyMixtureEntry, FullProductEntry, AutoEntry>;
 // Step one of the medium-to-medium gather: a point on the VRL (built from a MediumGatherQuery).
 using VrlSamplers = Registry<VrlPointEntry, VrlMarginalEntry>;
 

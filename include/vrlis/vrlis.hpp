@@ -13,6 +13,7 @@
 #include "samplers/full_product.hpp"
 #include "samplers/vrl_point.hpp"
 #include "samplers/vrl_marginal.hpp"
+#include "samplers/auto_sampler.hpp"
 #include "method.hpp"
 #include "gather/medium_gather.hpp"
 #include "gather/surface_gather.hpp"
@@ -24,4 +25,5 @@ static_assert(IsSegmentSampler<Novak<float>>::value && IsSegmentSampler<Novak<do
 static_assert(IsSegmentSampler<CauchySum<float>>::value && IsSegmentSampler<CauchySum<double>>::value);
 static_assert(IsSegmentSampler<CauchyMixture<float>>::value && IsSegmentSampler<CauchyMixture<double>>::value);
 static_assert(IsSegmentSampler<FullProduct<float>>::value && IsSegmentSampler<FullProduct<double>>::value);
+static_assert(IsSegmentSampler<Auto<float>>::value && IsSegmentSampler<Auto<double>>::value);
 }  // namespace vrlis
