@@ -98,8 +98,8 @@ int main(int argc, char** argv) {
   if (pairs < 1 || threads < 1) Usage(2);
 
   const int G = int(std::size(kStudyG));
-  std::vector<std::vector<Pair<double>>> configs;
-  for (double g : kStudyG) configs.push_back(MakePairs(seed, pairs, g));
+  std::vector<std::vector<Config<double>>> configs;
+  for (double g : kStudyG) configs.push_back(MakeConfigs(seed, pairs, g));
   std::vector<std::vector<PairResult>> results(G, std::vector<PairResult>(pairs));
 
   // Deterministic: each task writes its own slot; the thread count only changes the speed.
@@ -108,8 +108,8 @@ int main(int argc, char** argv) {
   auto worker = [&] {
     for (int task; (task = next++) < G * pairs;) {
       int gi = task / pairs, pi = task % pairs;
-      const Pair<double>& p = configs[gi][pi];
-      Moments cam = CameraStepMoments(p, settings), whole = WholeMoments(p, settings);
+      const Config<double>& c = configs[gi][pi];
+      Moments cam = CameraStepMoments(c.query, c.xi_vrl, settings), whole = WholeMoments(c.query, settings);
       PairResult& r = results[gi][pi];
       for (int k = 0; k < K; ++k) {
         r.camera[k] = cam.RelativeVariance(k);
@@ -132,14 +132,14 @@ int main(int argc, char** argv) {
   out["inner_tol"] = settings.inner_tol;
   out["outer_tol"] = settings.outer_tol;
   out["medium"] = "infinite homogeneous, sigma_t = 1; lengths log-uniform [0.25, 4], VRL distance log-uniform [0.1, 3]";
-  out["samplers"] = kCameraSamplerNames;
+  for (auto m : vrlis::kMethods) out["samplers"].push_back(vrlis::Name(m));
   out["seconds"] = seconds;
   out["results"] = nlohmann::ordered_json::array();
 
   std::printf("Relative variance by quadrature, %d pairs per g (seed %llu), %.1f s\n", pairs,
               static_cast<unsigned long long>(seed), seconds);
   std::printf("%-6s %-5s", "g", "step");
-  for (int k = 0; k < K; ++k) std::printf(" | %-26s", kCameraSamplerNames[k]);
+  for (auto m : vrlis::kMethods) std::printf(" | %-26s", std::string(vrlis::Name(m)).c_str());
   std::printf("\n%-6s %-5s", "", "");
   for (int k = 0; k < K; ++k) std::printf(" | %8s %8s %8s", "median", "mean", "best");
   std::printf("\n");
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
       std::printf("%-6.2f %-5s", kStudyG[gi], name[0] == 'c' ? "cam" : name[5] ? "wholM" : "whole");
       for (int k = 0; k < K; ++k) {
         std::printf(" | %8.4g %8.4g %8d", summary[k].median, summary[k].mean, summary[k].best);
-        entry[name][kCameraSamplerNames[k]] = {
+        entry[name][std::string(vrlis::Name(vrlis::kMethods[k]))] = {
             {"median", summary[k].median}, {"mean", summary[k].mean}, {"best", summary[k].best}};
       }
       std::printf("\n");

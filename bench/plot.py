@@ -22,7 +22,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-SAMPLERS = ["Equiangular", "Novak", "CauchySum", "CauchyMixture", "FullProduct"]
+# The library's registry names (vrlis::kMethods) and the labels the charts and tables use.
+LABELS = {"equiangular": "Equiangular", "novak": "Novak", "cauchy-sum": "CauchySum",
+          "cauchy-mixture": "CauchyMixture", "full-product": "FullProduct"}
+SAMPLERS = list(LABELS.values())
 COLORS = {"Equiangular": "#7f7f7f", "Novak": "#1f77b4", "CauchySum": "#d62728", "CauchyMixture": "#2ca02c", "FullProduct": "#9467bd"}
 MARKERS = {"Equiangular": "s", "Novak": "o", "CauchySum": "^", "CauchyMixture": "v", "FullProduct": "D"}
 PUBLISHED = ["Equiangular", "Novak", "CauchySum", "CauchyMixture"]  # FullProduct is vrlis's own
@@ -41,6 +44,9 @@ def load_bench(path):
     times, singles = {}, {}
     for b in data["benchmarks"]:
         name = b.get("run_name", b["name"])
+        parts = name.split("/")
+        if len(parts) == 3 and parts[1] in LABELS:  # kind/<registry name>/g:<g>
+            name = "/".join([parts[0], LABELS[parts[1]], parts[2]])
         t = b["cpu_time"] * UNIT[b.get("time_unit", "ns")]
         if b.get("run_type") == "aggregate":
             if b.get("aggregate_name") == "median":
@@ -82,6 +88,10 @@ def main():
     times, context = load_bench(args.bench)
     with open(args.accuracy) as f:
         acc = json.load(f)
+    for r in acc["results"]:
+        for step, _, _ in STEPS:
+            if step in r:
+                r[step] = {LABELS[k]: v for k, v in r[step].items()}
     gs = [r["g"] for r in acc["results"]]
     steps = [st for st in STEPS if all(st[0] in r for r in acc["results"])]
     relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS} for step, _, _ in steps}
