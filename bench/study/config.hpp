@@ -43,7 +43,8 @@ struct Config {
   template <typename Other>
   Config<Other> as() const {
     auto v = [](Vec3<Real> a) { return Vec3<Other>{Other(a.x), Other(a.y), Other(a.z)}; };
-    const auto &c = query.camera, &l = query.vrl;
+    const auto& c = query.camera;
+    const auto& l = query.vrl;
     const auto& m = query.medium;
     MediumGatherQuery<Other> q{{v(c.origin), v(c.dir), Other(c.tmin), Other(c.tmax)},
                                {v(l.origin), v(l.dir), Other(l.length)},
