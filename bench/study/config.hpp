@@ -76,6 +76,9 @@ inline Config<double> RandomConfig(Rng& rng, double g) {
   return c;
 }
 
+inline constexpr const char* kSyntheticDescription =
+    "infinite homogeneous, sigma_t = 1; lengths log-uniform [0.25, 4], VRL distance log-uniform [0.1, 3]";
+
 // The same geometry for every g (only g changes), so results across g are comparable.
 inline std::vector<Config<double>> MakeConfigs(std::uint64_t seed, int count, double g) {
   Rng rng(seed);
