@@ -119,7 +119,10 @@ def main():
              f"{context.get('vrlis_pool', '1024')} random queries cycled in order; median CPU time of the repetitions "
              f"of one run (vrlis build: {context.get('vrlis_build', '?')}).")
     L.append(f"- Accuracy: `vrlis_accuracy`, relative variance `Int f^2/p / (Int f)^2 - 1` by quadrature (double), "
-             f"{acc['pairs']} seeded pairs per g (seed {acc['seed']}), {acc['medium']}.")
+             f"{acc['pairs']} seeded configurations per g (seed {acc['seed']}), {acc['medium']}"
+             + (f"; {100 * acc['hard_class']['fraction']:.0f}% of them in the scenes' hard class (a camera segment "
+                f"within 0.05 mean free paths of the VRL and running on more than 3 beyond; "
+                f"[accuracy_scenes.md](accuracy_scenes.md))" if "hard_class" in acc else "") + ".")
     L.append("- Efficiency: `1 / (mean relative variance x time per sample)`, in 1/s; "
              "the margin is the winner's efficiency over the runner-up's.\n")
 

