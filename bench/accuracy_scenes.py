@@ -63,6 +63,40 @@ def relvar_table(L, runs, step, title):
     L.append("")
 
 
+def best_weighted(acc, step, samplers):
+    r = acc["results"][0][step]
+    vals = {s: r[s].get("weighted") for s in samplers}
+    vals = {s: v for s, v in vals.items() if v is not None and math.isfinite(v)}
+    return min(vals, key=vals.get) if vals else None
+
+
+def summary(runs):
+    """Sentences computed from the runs (so that they stay true when the page is regenerated)."""
+    n = len(runs)
+    few = [f"{scene} {g:g}" for scene, g, acc, _ in runs if acc["effective_queries"] < 5]
+    lines = []
+    lines.append(f"- The image's weights are concentrated: in {len(few)} of {n} runs fewer than 5 effective queries "
+                 f"carry the image-weighted figures ({', '.join(few) or 'none'}): there they are decided by a handful "
+                 f"of queries (a larger sample would pin them down better); the unweighted means and medians rest on all ~"
+                 f"{round(sum(a['records'] for _, _, a, _ in runs) / n)} queries of each run.")
+    hard = [(scene, g, acc["hard_class"]) for scene, g, acc, _ in runs if acc["hard_class"]["count"] > 0]
+    if hard:
+        parts = [f"{scene} {g:g}: {100 * h['fraction']:.1f}% of the queries, {100 * h['weight_fraction']:.0f}% of "
+                 f"the weight" for scene, g, h in hard]
+        lines.append("- Hard-class queries (long segments passing close to a VRL) occur in " +
+                     ", ".join(sorted({s for s, _, _ in hard})) + " only, and carry much of its image: " +
+                     "; ".join(parts) + ".")
+    for step, label in [("whole", "whole estimator (VrlPoint)"), ("whole_marginal", "whole estimator (+M)"),
+                        ("camera", "camera step")]:
+        wins = {}
+        for _, _, acc, _ in runs:
+            b = best_weighted(acc, step, SAMPLERS)
+            wins[b] = wins.get(b, 0) + 1
+        text = ", ".join(f"{s} in {c}" for s, c in sorted(wins.items(), key=lambda kv: -kv[1]))
+        lines.append(f"- Lowest image-weighted relative variance of the {label}: {text} of {n} runs.")
+    return "\n".join(lines) + "\n"
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--dir", required=True)
@@ -119,6 +153,8 @@ def main():
                  f"{100 * acc['largest_share']:.0f}% | {top_text} |")
     L.append("")
 
+    L.append("## In short\n")
+    L.append(summary(runs))
     L.append("## Relative variance per sampler\n")
     relvar_table(L, runs, "whole", "Whole estimator (VRL point by VrlPoint, camera point by the sampler)")
     relvar_table(L, runs, "whole_marginal", "Whole estimator with VrlMarginal as step one (+M)")

@@ -4,7 +4,7 @@
 # (vrl_render --gather m2m, 4 passes of 64 light paths) keeping about VRLIS_SCENE_QUERIES of
 # its gather queries (--dump-queries, --dump-every chosen from a first render's gather
 # count), runs vrlis_accuracy --queries on the dump, and writes docs/accuracy_scenes.md
-# (the dumps and per-run JSON stay in <outdir>; the page is what is committed).
+# and copies the dumps to docs/accuracy_scenes/ (per-run JSON and tables stay in <outdir>).
 #
 #   tools/accuracy_scenes.sh [outdir=out/accuracy_scenes]
 # Environment: VRLIS_SCENES_BUILD (build dir, default build-scenes), VRLIS_SCENE_QUERIES
@@ -48,5 +48,7 @@ command="tools/accuracy_scenes.sh${1:+ $1}"
   --command "$command" --date "$(date -u '+%Y-%m-%d %H:%M UTC')" --seconds "$(( $(date +%s) - start ))" --queries "$queries"
 if [ "${VRLIS_SCENES_NO_DOCS:-0}" != 1 ]; then
   cp "$out/accuracy_scenes.md" docs/accuracy_scenes.md
-  echo "== updated docs/accuracy_scenes.md"
+  mkdir -p docs/accuracy_scenes  # the dumps themselves: about 76 kB each
+  cp "$out"/*.qlog docs/accuracy_scenes/
+  echo "== updated docs/accuracy_scenes.md and docs/accuracy_scenes/*.qlog"
 fi
