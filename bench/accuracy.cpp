@@ -278,6 +278,17 @@ int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSet
   for (std::size_t gi = 0; gi < std::size(kStudyG); ++gi) {
     Json entry = {{"g", kStudyG[gi]}};
     entry.update(Report(kStudyG[gi], results[gi], {}, {}));
+    // The whole estimator with VrlPoint over the configurations where VrlMarginal is defined
+    // (bounded camera segments), to compare the two steps one on the same configurations.
+    std::vector<Result> bounded;
+    for (const Result& r : results[gi])
+      if (std::isfinite(r.whole_marginal[0])) bounded.push_back(r);
+    auto summary = Summarise(bounded, &Result::whole, {});
+    for (int k = 0; k < K; ++k)
+      entry["whole_bounded"][SamplerName(k)] = {{"median", summary[std::size_t(k)].median},
+                                                {"mean", summary[std::size_t(k)].mean},
+                                                {"best", summary[std::size_t(k)].best},
+                                                {"count", summary[std::size_t(k)].count}};
     out["results"].push_back(entry);
   }
   if (!WriteJson(json_path, out)) Fail("cannot write " + json_path);
