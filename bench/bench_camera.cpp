@@ -1,4 +1,4 @@
-// Camera/<Sampler>/g:<g>: fit from a query, sample, pdf.
+// Camera/<method>/g:<g>: fit from a query, sample, pdf.
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
@@ -10,7 +10,7 @@ void Camera(benchmark::State& state, double g) {
   size_t i = 0;
   for (auto _ : state) {
     Sampler s(pools.camera[i]);
-    float t = s.sample(pools.pairs[i].xi_cam);
+    float t = s.sample(pools.configs[i].xi_cam);
     float pdf = s.pdf(t);
     benchmark::DoNotOptimize(t);
     benchmark::DoNotOptimize(pdf);

@@ -1,31 +1,20 @@
-// Estimator/<Sampler>/g:<g>: the whole medium-to-medium step without visibility, step one by
-// VrlPoint. EstimatorMarginal/<Sampler>/g:<g>: the same with VrlMarginal as step one.
-#include <type_traits>
+// Estimator/<method>/g:<g>: the library's whole medium-to-medium gather without visibility
+// (SampleMediumGather: step one by VrlPoint, the camera sampler, the integrand, f / pdf), as
+// a renderer calls it. EstimatorMarginal/<method>/g:<g>: the same with VrlMarginal as step one.
+#include <utility>
 
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
 namespace {
 
-template <typename Sampler, typename StepOne>
-void Estimator(benchmark::State& state, double g) {
+void Estimator(benchmark::State& state, GatherMethod method, double g) {
   const Pools& pools = PoolsFor(g);
   size_t i = 0;
   for (auto _ : state) {
-    const Pair<float>& p = pools.pairs[i];
-    StepOne vp([&] {
-      if constexpr (std::is_same_v<StepOne, VrlPoint<float>>) return VrlQuery(p);
-      else return MarginalQuery(p);
-    }());
-    float v = vp.sample(p.xi_vrl);
-    float p1 = vp.pdf(v);
-    Vec3<float> y = VrlPointAt(p, v);
-    Sampler s(CameraQuery(p, y));
-    float u = s.sample(p.xi_cam);
-    float p2 = s.pdf(u);
-    float f = IntegrandAt(p, u, y, v);
-    float estimate = p1 * p2 > 0 ? f / (p1 * p2) : 0.0f;
-    benchmark::DoNotOptimize(estimate);
+    const Config<float>& c = pools.configs[i];
+    GatherSample<float> s = SampleMediumGather(method, c.query, c.xi_vrl, c.xi_cam);
+    benchmark::DoNotOptimize(s.weight);
     i = (i + 1) & (kPool - 1);
   }
   state.SetItemsProcessed(state.iterations());
@@ -34,12 +23,12 @@ void Estimator(benchmark::State& state, double g) {
 }  // namespace
 
 void RegisterEstimator() {
-  RegisterPerSampler("Estimator", [](auto tag, benchmark::State& s, double g) {
-    Estimator<typename decltype(tag)::type, VrlPoint<float>>(s, g);
-  });
-  RegisterPerSampler("EstimatorMarginal", [](auto tag, benchmark::State& s, double g) {
-    Estimator<typename decltype(tag)::type, VrlMarginal<float>>(s, g);
-  });
+  for (auto [kind, step_one] : {std::pair{"Estimator", VrlSamplers::Of<VrlPointEntry>()},
+                                std::pair{"EstimatorMarginal", VrlSamplers::Of<VrlMarginalEntry>()}})
+    for (Method m : kMethods)
+      for (double g : kStudyG)
+        benchmark::RegisterBenchmark(BenchName(kind, Name(m), g).c_str(),
+                                     [m, step_one = step_one, g](benchmark::State& s) { Estimator(s, {m, step_one}, g); });
 }
 
 }  // namespace vrlis::bench

@@ -1,4 +1,4 @@
-// Fit/<Sampler>/g:<g>: the fit alone.
+// Fit/<method>/g:<g>: the fit alone.
 #include "bench_common.hpp"
 
 namespace vrlis::bench {

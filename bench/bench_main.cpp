@@ -1,16 +1,22 @@
 // vrlis_bench: the cost of one sample as a renderer pays it, with Google Benchmark.
 //
-//   Camera/<Sampler>/g:<g>     build the sampler from a query (the fit), sample, pdf
-//   Fit/<Sampler>/g:<g>        the fit alone (where Camera's time goes)
-//   Estimator/<Sampler>/g:<g>  the whole medium-to-medium step without visibility: VrlPoint
-//                              (fit, sample, pdf), the camera sampler (fit, sample, pdf), the
-//                              integrand, f / (p1 p2)
+//   Camera/<method>/g:<g>      build the sampler from a query (the fit), sample, pdf
+//   Fit/<method>/g:<g>         the fit alone (where Camera's time goes)
+//   Estimator/<method>/g:<g>   the library's whole medium-to-medium gather without visibility
+//                              (SampleMediumGather): VrlPoint (fit, sample, pdf), the camera
+//                              sampler (fit, sample, pdf), the integrand, f / (p1 p2)
+//   EstimatorMarginal/...      the same with VrlMarginal as step one
 //   VrlPoint                   step one alone (fit, sample, pdf); independent of g
+//   VrlMarginal/step/g:<g>     VrlMarginal alone
 //
-// Every benchmark cycles in order through a pool of 1024 random queries (the pairs of the
-// accuracy study, seeded), so that no single warm branch is timed. Float throughout; each
-// sampler is its concrete type (no run-time dispatch). One iteration is one sample.
+// Every benchmark cycles in order through a pool of 1024 random configurations (those of
+// the accuracy study, seeded), so that no single warm branch is timed. Float throughout;
+// samplers are chosen through the library's registry (CameraSamplers::With: one predictable
+// branch, the concrete type inside). One iteration is one sample.
 // Standard flags apply: --benchmark_filter=Novak, --benchmark_format=json, ...
+#include <map>
+#include <memory>
+
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
@@ -20,12 +26,11 @@ const Pools& PoolsFor(double g) {
   auto& slot = cache[g];
   if (!slot) {
     slot = std::make_unique<Pools>();
-    for (const Pair<double>& pd : MakePairs(kDefaultSeed, int(kPool), g)) {
-      Pair<float> p = pd.as<float>();
-      VrlPoint<float> vp(VrlQuery(p));
-      slot->pairs.push_back(p);
-      slot->vrl.push_back(VrlQuery(p));
-      slot->camera.push_back(CameraQuery(p, VrlPointAt(p, vp.sample(p.xi_vrl))));
+    for (const Config<double>& cd : MakeConfigs(kDefaultSeed, int(kPool), g)) {
+      Config<float> c = cd.as<float>();
+      VrlPoint<float> vp(c.query);
+      slot->configs.push_back(c);
+      slot->camera.push_back(CameraStepQuery(c.query, c.query.vrl.at(vp.sample(c.xi_vrl))));
     }
   }
   return *slot;

@@ -8,8 +8,8 @@ void VrlPointStep(benchmark::State& state) {
   const Pools& pools = PoolsFor(0.0);
   size_t i = 0;
   for (auto _ : state) {
-    VrlPoint<float> vp(pools.vrl[i]);
-    float v = vp.sample(pools.pairs[i].xi_vrl);
+    VrlPoint<float> vp(pools.configs[i].query);
+    float v = vp.sample(pools.configs[i].xi_vrl);
     float pdf = vp.pdf(v);
     benchmark::DoNotOptimize(v);
     benchmark::DoNotOptimize(pdf);
@@ -22,8 +22,8 @@ void VrlMarginalStep(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
   size_t i = 0;
   for (auto _ : state) {
-    VrlMarginal<float> vm(MarginalQuery(pools.pairs[i]));
-    float v = vm.sample(pools.pairs[i].xi_vrl);
+    VrlMarginal<float> vm(pools.configs[i].query);
+    float v = vm.sample(pools.configs[i].xi_vrl);
     float pdf = vm.pdf(v);
     benchmark::DoNotOptimize(v);
     benchmark::DoNotOptimize(pdf);

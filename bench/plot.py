@@ -22,7 +22,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-SAMPLERS = ["Equiangular", "Novak", "CauchySum", "CauchyMixture", "FullProduct"]
+# The library's registry names (vrlis::kMethods) and the labels the charts and tables use.
+LABELS = {"equiangular": "Equiangular", "novak": "Novak", "cauchy-sum": "CauchySum",
+          "cauchy-mixture": "CauchyMixture", "full-product": "FullProduct"}
+SAMPLERS = list(LABELS.values())
 COLORS = {"Equiangular": "#7f7f7f", "Novak": "#1f77b4", "CauchySum": "#d62728", "CauchyMixture": "#2ca02c", "FullProduct": "#9467bd"}
 MARKERS = {"Equiangular": "s", "Novak": "o", "CauchySum": "^", "CauchyMixture": "v", "FullProduct": "D"}
 PUBLISHED = ["Equiangular", "Novak", "CauchySum", "CauchyMixture"]  # FullProduct is vrlis's own
@@ -41,6 +44,9 @@ def load_bench(path):
     times, singles = {}, {}
     for b in data["benchmarks"]:
         name = b.get("run_name", b["name"])
+        parts = name.split("/")
+        if len(parts) == 3 and parts[1] in LABELS:  # kind/<registry name>/g:<g>
+            name = "/".join([parts[0], LABELS[parts[1]], parts[2]])
         t = b["cpu_time"] * UNIT[b.get("time_unit", "ns")]
         if b.get("run_type") == "aggregate":
             if b.get("aggregate_name") == "median":
@@ -82,15 +88,27 @@ def main():
     times, context = load_bench(args.bench)
     with open(args.accuracy) as f:
         acc = json.load(f)
+    for r in acc["results"]:
+        for step, _, _ in STEPS:
+            if step in r:
+                r[step] = {LABELS[k]: v for k, v in r[step].items()}
     gs = [r["g"] for r in acc["results"]]
     steps = [st for st in STEPS if all(st[0] in r for r in acc["results"])]
-    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS} for step, _, _ in steps}
+    # VrlMarginal needs a bounded camera segment: with unbounded ones in the study, VrlPoint is
+    # compared with it on the bounded configurations only ("whole_bounded").
+    bounded = all("whole_bounded" in r for r in acc["results"])
+    for r in acc["results"]:
+        if bounded:
+            r["whole_bounded"] = {LABELS[k]: v for k, v in r["whole_bounded"].items()}
+    whole_steps = [("whole_bounded" if bounded else "whole", "Estimator", ""), WHOLE[1]]
+    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS}
+              for step in [st[0] for st in steps] + (["whole_bounded"] if bounded else [])}
 
     def time(prefix, s, g):
         return times.get(f"{prefix}/{s}/{gkey(g)}")
 
     eff = {}
-    for step, prefix, _ in steps:
+    for step, prefix, _ in steps + ([("whole_bounded", "Estimator", "")] if bounded else []):
         for g in gs:
             for s in SAMPLERS:
                 t, rv = time(prefix, s, g), relvar[step][(g, s)]
@@ -109,7 +127,10 @@ def main():
              f"{context.get('vrlis_pool', '1024')} random queries cycled in order; median CPU time of the repetitions "
              f"of one run (vrlis build: {context.get('vrlis_build', '?')}).")
     L.append(f"- Accuracy: `vrlis_accuracy`, relative variance `Int f^2/p / (Int f)^2 - 1` by quadrature (double), "
-             f"{acc['pairs']} seeded pairs per g (seed {acc['seed']}), {acc['medium']}.")
+             f"{acc['pairs']} seeded configurations per g (seed {acc['seed']}), {acc['medium']}"
+             + (f"; {100 * acc['hard_class']['fraction']:.0f}% of them in the scenes' hard class (a camera segment "
+                f"within 0.05 mean free paths of the VRL and running on more than 3 beyond; "
+                f"[accuracy_scenes.md](accuracy_scenes.md))" if "hard_class" in acc else "") + ".")
     L.append("- Efficiency: `1 / (mean relative variance x time per sample)`, in 1/s; "
              "the margin is the winner's efficiency over the runner-up's.\n")
 
@@ -182,17 +203,21 @@ def main():
     if "whole_marginal" in relvar:
         L.append("## Whole estimator, either step one: the most efficient combination\n")
         L.append("Step one by VrlPoint (no suffix) or VrlMarginal (+M), camera step by each sampler; "
-                 "efficiency from the mean relative variance and the EstimatorMarginal / Estimator times.\n")
+                 "efficiency from the mean relative variance and the EstimatorMarginal / Estimator times"
+                 + (", both over the configurations with a bounded camera segment (VrlMarginal needs one: "
+                    f"{acc['results'][0]['whole_marginal']['Novak']['count']} of {acc['pairs']})" if bounded else "")
+                 + ".\n")
         L.append("| g | best with VrlPoint (eff.) | best with VrlMarginal (eff.) | gain | "
                  "FullProduct: rel. var. VrlPoint -> +M (mean) | time (ns) | most efficient overall (margin) |")
         L.append("|---" * 7 + "|")
         for g in gs:
-            combos = [(s + suffix, eff[(step, g, s)], step, prefix, s) for step, prefix, suffix in WHOLE for s in SAMPLERS]
+            combos = [(s + suffix, eff[(step, g, s)], step, prefix, s) for step, prefix, suffix in whole_steps
+                      for s in SAMPLERS]
             combos = [c for c in combos if math.isfinite(c[1])]
             combos.sort(key=lambda c: -c[1])
-            bp = max((c for c in combos if c[2] == "whole"), key=lambda c: c[1])
+            bp = max((c for c in combos if c[2] == whole_steps[0][0]), key=lambda c: c[1])
             bm = max((c for c in combos if c[2] == "whole_marginal"), key=lambda c: c[1])
-            fp0, fp1 = relvar["whole"][(g, "FullProduct")]["mean"], relvar["whole_marginal"][(g, "FullProduct")]["mean"]
+            fp0, fp1 = relvar[whole_steps[0][0]][(g, "FullProduct")]["mean"], relvar["whole_marginal"][(g, "FullProduct")]["mean"]
             t0, t1 = time("Estimator", "FullProduct", g), time("EstimatorMarginal", "FullProduct", g)
             L.append(f"| {g:g} | {bp[0]} ({bp[1]:.3g}) | {bm[0]} ({bm[1]:.3g}) | x{bm[1] / bp[1]:.2f} | "
                      f"{fmt(fp0)} -> {fmt(fp1)} | {fmt(t0)} -> {fmt(t1)} | "

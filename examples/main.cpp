@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include <vrlis_integration/query_log.hpp>
 #include <vrlis_integration/renderer.hpp>
 #include <vrlis_scenes/image_io.hpp>
 #include <vrlis_scenes/scenes.hpp>
@@ -95,7 +96,8 @@ int main(int argc, char** argv) {
   std::optional<float> g, sigma_s, sigma_a, exposure;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1, dump_every = 1000;
+  std::string dump_queries;
   bool no_jitter = false, no_caustics = false, quiet = false, json = false;
 
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
@@ -127,6 +129,11 @@ int main(int argc, char** argv) {
                                              "scattering (what a path tracer with point lights can render)");
   app.add_flag("--quiet", quiet, "No progress bar and no summary line");
   app.add_flag("--json", json, "Print the JSON summary (also written beside the image) instead of the summary line");
+  app.add_option("--dump-queries", dump_queries, "Write a sample of the medium-to-medium gather queries and their "
+                                                 "image weights to this file (vrl integrator; format in "
+                                                 "vrlis_integration/query_log.hpp)");
+  app.add_option("--dump-every", dump_every, "Keep about one gather query in K for --dump-queries")
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -150,6 +157,9 @@ int main(int argc, char** argv) {
   if (app.count("--time") && !(seconds > 0 && std::isfinite(seconds))) return Fail("--time must be positive");
   if (vrls < 1) return Fail("--vrls must be positive");
   if (threads < 0) return Fail("--threads must be >= 0");
+  if (dump_every < 1) return Fail("--dump-every must be positive");
+  if (!dump_queries.empty() && integrator != "vrl") return Fail("--dump-queries needs --integrator vrl");
+  if (!dump_queries.empty() && !vrl_render::CanWrite(dump_queries)) return Fail("cannot write output file '" + dump_queries + "'");
   if (exposure && !(*exposure > 0 && std::isfinite(*exposure))) return Fail("--exposure must be positive");
   auto built = vrl_render::BuildScene(scene_name, {g, sigma_s, sigma_a});
   if (!built) return Fail("unknown scene '" + scene_name + "' (expected " + JoinNames() + ")");
@@ -184,6 +194,8 @@ int main(int argc, char** argv) {
     settings.transport.medium_to_surface = gather == "m2s";
     settings.transport.direct = settings.transport.indirect = false;
   }
+  vrli::QueryLog query_log(dump_every);
+  if (!dump_queries.empty()) settings.transport.query_log = &query_log;
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(workers));
   std::unique_ptr<vrli::Renderer> renderer;
@@ -239,6 +251,14 @@ int main(int argc, char** argv) {
   if (timed) summary["time_budget_s"] = seconds;
   if (ref) summary["rmse"] = Rmse(image, *ref);
   std::string err;
+  if (!dump_queries.empty()) {
+    std::vector<vrli::QueryRecord> records = query_log.Records();
+    summary["dumped_queries"] = records.size();
+    if (!vrli::WriteQueryLog(dump_queries, records, &err)) {
+      std::fprintf(stderr, "vrl_render: error: %s\n", err.c_str());
+      return 1;
+    }
+  }
   if (!vrl_render::WriteExr(out, image, &err) ||
       !vrl_render::WritePng(png, image, exposure ? *exposure : vrl_render::AutoExposure(image), &err) ||
       !vrl_render::WriteText(json_path, summary.dump(2) + "\n", &err)) {

@@ -1,10 +1,11 @@
 #pragma once
-// Random VRL / camera segment pairs in an infinite homogeneous medium, shared by the
+// Random medium-to-medium gather queries in an infinite homogeneous medium, shared by the
 // benchmarks, the accuracy study and its test. Everything is seeded and portable: the
 // generator is SplitMix64 and the uniforms are built from its bits, so a seed gives the
-// same pairs with every compiler and standard library.
+// same queries with every compiler and standard library.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <vrlis/vrlis.hpp>
@@ -32,78 +33,71 @@ class Rng {
   std::uint64_t state_;
 };
 
-// A camera segment x(u) = xc + u wc, u in [0, s], and a VRL y(v) = xl + v wl, v in [0, t],
-// in a medium with extinction sigma_t (the mean free path is 1 / sigma_t) and HG(g).
+// One configuration of the study: the library's gather query, and the two uniforms that fix
+// its VRL point (the camera-step study: VrlPoint.sample(xi_vrl)) and its camera point (the
+// benchmarks).
 template <typename Real>
-struct Pair {
-  Vec3<Real> xc{}, wc{};
-  Real s = 0;
-  Vec3<Real> xl{}, wl{};
-  Real t = 0;
-  Real g = 0;
-  Real sigma_t = 1;
-  Real xi_vrl = Real(0.5);  // the fixed VRL point of the camera-step study: VrlPoint.sample(xi_vrl)
-  Real xi_cam = Real(0.5);  // a second uniform, for benchmarks that need one
+struct Config {
+  MediumGatherQuery<Real> query;
+  Real xi_vrl = Real(0.5), xi_cam = Real(0.5);
 
   template <typename Other>
-  Pair<Other> as() const {
-    auto cv = [](Vec3<Real> a) { return Vec3<Other>{Other(a.x), Other(a.y), Other(a.z)}; };
-    return {cv(xc), cv(wc), Other(s), cv(xl), cv(wl), Other(t), Other(g), Other(sigma_t), Other(xi_vrl), Other(xi_cam)};
+  Config<Other> as() const {
+    auto v = [](Vec3<Real> a) { return Vec3<Other>{Other(a.x), Other(a.y), Other(a.z)}; };
+    const auto& c = query.camera;
+    const auto& l = query.vrl;
+    const auto& m = query.medium;
+    MediumGatherQuery<Other> q{{v(c.origin), v(c.dir), Other(c.tmin), Other(c.tmax)},
+                               {v(l.origin), v(l.dir), Other(l.length)},
+                               {Other(m.g), Other(m.sigma_s), Other(m.sigma_t)}};
+    return {q, Other(xi_vrl), Other(xi_cam)};
   }
 };
 
-// Lengths and distances of the order of the mean free path and a few times it (sigma_t = 1):
-// segment lengths log-uniform in [0.25, 4]; the VRL starts at a distance log-uniform in
-// [0.1, 3] from a uniform point of the camera segment, in a uniform direction, and runs in
-// a uniform direction.
-inline Pair<double> RandomPair(Rng& rng, double g) {
-  Pair<double> p;
-  p.xc = {0, 0, 0};
-  p.wc = rng.direction();
-  p.s = rng.log_uniform(0.25, 4);
-  Vec3<double> anchor = p.xc + rng.uniform(0, p.s) * p.wc;
-  p.xl = anchor + rng.log_uniform(0.1, 3) * rng.direction();
-  p.wl = rng.direction();
-  p.t = rng.log_uniform(0.25, 4);
-  p.g = g;
-  p.sigma_t = 1;
-  p.xi_vrl = rng.uniform();
-  p.xi_cam = rng.uniform();
-  return p;
+// The synthetic distribution, in mean free paths (mfp = 1 / sigma_t), wide enough to hold
+// the configurations the scenes make (docs/accuracy_scenes.md: segments and VRLs up to 14
+// mfp, camera segments passing within 0.05 mfp of a VRL and running on for many mfp):
+// camera segments from the origin, log-uniform in [0.25, 20] mfp, one in eight unbounded;
+// VRLs log-uniform in [0.25, 20] mfp, starting at a distance log-uniform in [0.01, 3] mfp
+// from a uniform point of the camera segment's first 4 mfp, in uniform directions. A
+// relative variance depends on lengths in mfp only (scaling every length leaves it
+// unchanged), so sigma_t, log-uniform in [0.05, 5], varies the samplers' arithmetic rather
+// than the study. Scattering albedo 0.7 (a constant factor, it cancels).
+inline Config<double> RandomConfig(Rng& rng, double g) {
+  Config<double> c;
+  double sigma_t = rng.log_uniform(0.05, 5), mfp = 1 / sigma_t;
+  auto& cam = c.query.camera;
+  cam.origin = {0, 0, 0};
+  cam.dir = rng.direction();
+  cam.tmin = 0;
+  double length = rng.log_uniform(0.25, 20) * mfp;
+  cam.tmax = rng.uniform() < 0.125 ? std::numeric_limits<double>::infinity() : length;
+  Vec3<double> anchor = cam.at(rng.uniform(0, std::min(length, 4 * mfp)));
+  auto& vrl = c.query.vrl;
+  vrl.origin = anchor + rng.log_uniform(0.01, 3) * mfp * rng.direction();
+  vrl.dir = rng.direction();
+  vrl.length = rng.log_uniform(0.25, 20) * mfp;
+  c.query.medium = {g, 0.7 * sigma_t, sigma_t};
+  c.xi_vrl = rng.uniform();
+  c.xi_cam = rng.uniform();
+  return c;
 }
 
+inline constexpr const char* kSyntheticDescription =
+    "infinite homogeneous, sigma_t log-uniform [0.05, 5]; camera segments log-uniform [0.25, 20] mfp, one in eight "
+    "unbounded; VRLs log-uniform [0.25, 20] mfp; VRL start at a distance log-uniform [0.01, 3] mfp from a uniform "
+    "point of the camera segment's first 4 mfp";
+
 // The same geometry for every g (only g changes), so results across g are comparable.
-inline std::vector<Pair<double>> MakePairs(std::uint64_t seed, int count, double g) {
+inline std::vector<Config<double>> MakeConfigs(std::uint64_t seed, int count, double g) {
   Rng rng(seed);
-  std::vector<Pair<double>> pairs;
-  pairs.reserve(count);
-  for (int i = 0; i < count; ++i) pairs.push_back(RandomPair(rng, g));
-  return pairs;
+  std::vector<Config<double>> configs;
+  configs.reserve(count);
+  for (int i = 0; i < count; ++i) configs.push_back(RandomConfig(rng, g));
+  return configs;
 }
 
 inline constexpr double kStudyG[] = {-0.99, -0.9, -0.5, -0.3, 0, 0.3, 0.5, 0.7, 0.9, 0.99};
 inline constexpr std::uint64_t kDefaultSeed = 20240611;
-
-// Step one: the query of Novák's VRL-point sampler for this pair.
-template <typename Real>
-VrlPointQuery<Real> VrlQuery(const Pair<Real>& p) {
-  return {p.xl, p.wl, Real(0), p.t, p.xc, p.wc};
-}
-
-// Step one following the marginal of the whole integrand (VrlMarginal): the camera
-// segment, g and sigma_t as well.
-template <typename Real>
-VrlMarginalQuery<Real> MarginalQuery(const Pair<Real>& p) {
-  return {p.xl, p.wl, Real(0), p.t, p.xc, p.wc, p.s, p.g, p.sigma_t};
-}
-
-template <typename Real>
-Vec3<Real> VrlPointAt(const Pair<Real>& p, Real v) { return p.xl + v * p.wl; }
-
-// Step two: the camera segment seen from the VRL point y, with the VRL's lobe at y.
-template <typename Real>
-SegmentQuery<Real> CameraQuery(const Pair<Real>& p, Vec3<Real> y) {
-  return MediumToMediumQuery(p.xc, p.wc, Real(0), p.s, y, p.wl, p.g, p.sigma_t);
-}
 
 }  // namespace vrlis::study

@@ -1,6 +1,6 @@
 #pragma once
-// Relative variances of the medium-to-medium estimator by numerical quadrature (section 6
-// of the maths note): Int f^2 / p / (Int f)^2 - 1, for every camera sampler at once.
+// Relative variances of the medium-to-medium estimator by numerical quadrature
+// (docs/maths.md): Int f^2 / p / (Int f)^2 - 1, for every camera sampler at once.
 //
 // Camera step (VRL point y fixed): integrated over the sampler's own angle variable
 // delta = theta - theta_a, where du = d delta / J(u), J = dtheta/du, and the sampler's
@@ -20,11 +20,12 @@
 // in float elsewhere).
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <tuple>
 #include <vector>
 
-#include "integrand.hpp"
 #include "quadrature.hpp"
+#include "samplers.hpp"
 
 namespace vrlis::study {
 
@@ -53,15 +54,11 @@ struct Moments {
   double RelativeVarianceMarginal(int k) const { return second_marginal[k] / (first * first) - 1; }
 };
 
-// Every sampler of the tuple type fitted to one query.
-template <typename... S>
-std::tuple<S...> FitAll(const SegmentQuery<double>& q, std::tuple<S...>*) { return std::tuple<S...>(S(q)...); }
-
 // The breakpoints of the camera-step quadrature for one query, in delta: the nodes of the
 // piecewise-linear samplers (kinks of their densities), both lobes' peaks and a few multiples
 // of the lobes' and the seed's Cauchy widths around them.
 inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const AngleDomain<double>& dom,
-                                        const SamplerTuple<double>& samplers) {
+                                        const CameraSamplerTuple<double>& samplers) {
   double width = dom.width();
   std::vector<double> breaks = {0, width};
   for (double node : std::get<Novak<double>>(samplers).distribution().nodes()) breaks.push_back(node);
@@ -82,20 +79,26 @@ inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const Ang
   return kept;
 }
 
+// The integrand at the camera parameter t (zero at an unbounded segment's far end) and the
+// VRL parameter v.
+inline double IntegrandAt(const MediumGatherQuery<double>& q, double t, double v) {
+  return std::isfinite(t) ? MediumGatherIntegrand(q, t, v) : 0.0;
+}
+
 // Camera step for the VRL point y = y(v): Int f du and Int f^2 / p du for every sampler;
 // with `central`, a second pass integrates (f - p Int f)^2 / p as well.
-inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSettings& s = {}, bool central = false) {
+inline Moments CameraMoments(const MediumGatherQuery<double>& gq, double v, const QuadratureSettings& s = {},
+                             bool central = false) {
   constexpr int K = kCameraSamplerCount;
-  Vec3<double> y = VrlPointAt(p, v);
-  SegmentQuery<double> q = CameraQuery(p, y);
-  SamplerTuple<double> samplers = FitAll(q, static_cast<SamplerTuple<double>*>(nullptr));
+  SegmentQuery<double> q = CameraStepQuery(gq, gq.vrl.at(v));
+  CameraSamplerTuple<double> samplers = FitCameraSamplers(q);
   const auto& eq = std::get<0>(samplers);
   const AngleDomain<double>& dom = eq.domain();
   Moments m;
   if (!eq.valid() || !(dom.width() > 0)) return m;
   auto integrand = [&](double delta) {
     double u = dom.t_at(delta);
-    double fj = IntegrandAt(p, u, y, v) / dom.dtheta_dt(u);
+    double fj = IntegrandAt(gq, u, v) / dom.dtheta_dt(u);
     double f2 = fj * fj;
     std::array<double, K + 1> out{fj};
     std::apply([&](const auto&... sampler) {
@@ -114,7 +117,7 @@ inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSe
   double F = m.first;
   auto deviation = [&](double delta) {
     double u = dom.t_at(delta);
-    double fj = IntegrandAt(p, u, y, v) / dom.dtheta_dt(u);
+    double fj = IntegrandAt(gq, u, v) / dom.dtheta_dt(u);
     std::array<double, K> out{};
     std::apply([&](const auto&... sampler) {
       int k = 0;
@@ -131,31 +134,32 @@ inline Moments CameraMoments(const Pair<double>& p, double v, const QuadratureSe
   return m;
 }
 
-// The camera step alone, at the pair's fixed VRL point VrlPoint.sample(xi_vrl).
-inline Moments CameraStepMoments(const Pair<double>& p, const QuadratureSettings& s = {}) {
-  VrlPoint<double> vp(VrlQuery(p));
-  return CameraMoments(p, vp.sample(p.xi_vrl), s, true);
+// The camera step alone, at the configuration's fixed VRL point VrlPoint.sample(xi_vrl).
+inline Moments CameraStepMoments(const MediumGatherQuery<double>& q, double xi_vrl, const QuadratureSettings& s = {}) {
+  VrlPoint<double> vp(q);
+  return CameraMoments(q, vp.sample(xi_vrl), s, true);
 }
 
 // The whole two-step estimator f(u, v) / (p1(v) p2(u | v)), with VrlPoint as step one and
 // with VrlMarginal (density pm(v)) as step one:
 //   E[(f / (pm p2))^2] = Int dv (1 / pm) Int du f^2 / p2 = Int dxi (1 / (p1 pm)) Int du f^2 / p2,
 // on the same outer variable xi (VrlPoint's), broken at VrlMarginal's nodes (its kinks).
-inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s = {}) {
+// VrlMarginal needs a finite camera segment: for an unbounded one second_marginal is NaN.
+inline Moments WholeMoments(const MediumGatherQuery<double>& q, const QuadratureSettings& s = {}) {
   constexpr int K = kCameraSamplerCount;
-  VrlPoint<double> vp(VrlQuery(p));
-  VrlMarginal<double> vm(MarginalQuery(p));
+  VrlPoint<double> vp(q);
+  VrlMarginal<double> vm(q);
   Moments m;
   int inner_evaluations = 0;
   bool inner_converged = true;
   double inner_error = 0;
   auto integrand = [&](double xi) {
     double v = vp.sample(xi), p1 = vp.pdf(v);
-    Moments c = CameraMoments(p, v, s);
+    Moments c = CameraMoments(q, v, s);
     inner_evaluations += c.evaluations;
     inner_converged = inner_converged && c.converged;
     inner_error = std::max(inner_error, c.rel_error);
-    double pm = vm.pdf(v);
+    double pm = vm.valid() ? vm.pdf(v) : p1;  // (a placeholder, replaced by NaN below)
     std::array<double, 2 * K + 1> out{c.first / p1};
     for (int k = 0; k < K; ++k) {
       out[k + 1] = c.second[k] / (p1 * p1);
@@ -168,18 +172,18 @@ inline Moments WholeMoments(const Pair<double>& p, const QuadratureSettings& s =
   std::vector<double> breaks;
   for (int i = 0; i <= 8; ++i) breaks.push_back(i / 8.0);
   for (int j = 0; j < VrlMarginal<double>::kNodeCount; ++j) breaks.push_back(VrlMarginal<double>::node(j));
-  Vec3<double> c = Cross(p.wl, p.wc);
+  Vec3<double> wl = q.vrl.dir, wc = q.camera.dir, c = Cross(wl, wc);
   double sin2 = Dot(c, c);
   if (sin2 > 1e-12) {
-    Vec3<double> d = p.xc - p.xl;
-    double v0 = (Dot(d, p.wl) - Dot(d, p.wc) * Dot(p.wl, p.wc)) / sin2;
-    if (v0 > 0 && v0 < p.t) breaks.push_back(vp.invert(v0));
+    Vec3<double> d = q.camera.origin - q.vrl.origin;
+    double v0 = (Dot(d, wl) - Dot(d, wc) * Dot(wl, wc)) / sin2;
+    if (v0 > 0 && v0 < q.vrl.length) breaks.push_back(vp.invert(v0));
   }
   auto r = Integrate<2 * K + 1>(integrand, breaks, s.outer_tol, s.outer_max);
   m.first = r.value[0];
   for (int k = 0; k < K; ++k) {
     m.second[k] = r.value[k + 1];
-    m.second_marginal[k] = r.value[K + k + 1];
+    m.second_marginal[k] = vm.valid() ? r.value[K + k + 1] : std::numeric_limits<double>::quiet_NaN();
   }
   for (int n = 0; n <= 2 * K; ++n) m.rel_error = std::max(m.rel_error, r.error[n] / std::abs(r.value[n]));
   m.rel_error = std::max(m.rel_error, inner_error);

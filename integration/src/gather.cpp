@@ -19,12 +19,15 @@ float Connect(const Scene& scene, const vrlis::GatherSample<float>& s) {
   return s.weight * (scene.Transmittance(s.camera_point, s.light_point) / s.transmittance);
 }
 
+float RmsRgb(Spectrum s) { return std::sqrt((s.r * s.r + s.g * s.g + s.b * s.b) / 3); }
+
 }  // namespace
 
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
-                              const Vrl& vrl, Rng& rng) {
+                              const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
   float u_vrl = rng.Uniform(), u_camera = rng.Uniform();
   vrlis::MediumGatherQuery<float> q{SegmentOf(seg), SegmentOf(vrl), MediumOf(scene.medium)};
+  if (log) log->Record(q, RmsRgb(throughput * vrl.flux));
   return vrl.flux * Connect(scene, vrlis::SampleMediumGather(method, q, u_vrl, u_camera));
 }
 

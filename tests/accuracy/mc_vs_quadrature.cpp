@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <string>
 #include <utility>
 
 #include "study/variance.hpp"
@@ -44,40 +43,30 @@ McMoments RunMc(std::uint64_t seed, int n, const std::function<std::pair<double,
   return m;
 }
 
-// The k-th camera sampler of SamplerTuple in double: a sample u and its density p(u).
-template <size_t... I>
-std::pair<double, double> SampleCameraImpl(int k, const SegmentQuery<double>& q, double xi, std::index_sequence<I...>) {
-  std::pair<double, double> out{0, 0};
-  auto run = [&](const auto& sampler) {
-    double u = sampler.sample(xi);
-    out = {u, sampler.pdf(u)};
-  };
-  ((k == int(I) ? run(std::tuple_element_t<I, SamplerTuple<double>>(q)) : void()), ...);
-  return out;
-}
-
+// The k-th camera sampler of the registry in double: a sample u and its density p(u).
 std::pair<double, double> SampleCamera(int k, const SegmentQuery<double>& q, double xi) {
-  return SampleCameraImpl(k, q, xi, std::make_index_sequence<kCameraSamplerCount>());
-}
-
-McMoments WholeMc(const Pair<double>& p, int k, int n, std::uint64_t seed) {
-  VrlPoint<double> vp(VrlQuery(p));
-  return RunMc(seed, n, [&](Rng& rng) {
-    double v = vp.sample(rng.uniform()), p1 = vp.pdf(v);
-    Vec3<double> y = VrlPointAt(p, v);
-    auto [u, p2] = SampleCamera(k, CameraQuery(p, y), rng.uniform());
-    return std::pair{IntegrandAt(p, u, y, v), p1 * p2};
+  return CameraSamplers::With(kMethods[k], q, [&](const auto& sampler) {
+    double u = sampler.sample(xi);
+    return std::pair{u, sampler.pdf(u)};
   });
 }
 
-McMoments CameraMc(const Pair<double>& p, int k, int n, std::uint64_t seed) {
-  VrlPoint<double> vp(VrlQuery(p));
-  double v = vp.sample(p.xi_vrl);
-  Vec3<double> y = VrlPointAt(p, v);
-  SegmentQuery<double> q = CameraQuery(p, y);
+McMoments WholeMc(const MediumGatherQuery<double>& q, int k, int n, std::uint64_t seed) {
+  VrlPoint<double> vp(q);
+  return RunMc(seed, n, [&](Rng& rng) {
+    double v = vp.sample(rng.uniform()), p1 = vp.pdf(v);
+    auto [u, p2] = SampleCamera(k, CameraStepQuery(q, q.vrl.at(v)), rng.uniform());
+    return std::pair{IntegrandAt(q, u, v), p1 * p2};
+  });
+}
+
+McMoments CameraMc(const Config<double>& c, int k, int n, std::uint64_t seed) {
+  VrlPoint<double> vp(c.query);
+  double v = vp.sample(c.xi_vrl);
+  SegmentQuery<double> q = CameraStepQuery(c.query, c.query.vrl.at(v));
   return RunMc(seed, n, [&](Rng& rng) {
     auto [u, pdf] = SampleCamera(k, q, rng.uniform());
-    return std::pair{IntegrandAt(p, u, y, v), pdf};
+    return std::pair{IntegrandAt(c.query, u, v), pdf};
   });
 }
 
@@ -89,23 +78,24 @@ TEST_CASE("quadrature of the relative variance matches Monte Carlo", "[accuracy]
   const int n = 120000;
   int checked = 0;
   for (double g : {-0.5, 0.7, 0.9}) {
-    auto pairs = MakePairs(kDefaultSeed, 2, g);
-    for (size_t pi = 0; pi < pairs.size(); ++pi) {
-      const Pair<double>& p = pairs[pi];
-      Moments whole = WholeMoments(p), camera = CameraStepMoments(p);
+    auto configs = MakeConfigs(kDefaultSeed, 2, g);
+    for (size_t pi = 0; pi < configs.size(); ++pi) {
+      const Config<double>& p = configs[pi];
+      Moments whole = WholeMoments(p.query), camera = CameraStepMoments(p.query, p.xi_vrl);
       REQUIRE(whole.converged);
       REQUIRE(camera.converged);
       for (int k = 0; k < kCameraSamplerCount; ++k) {
         std::uint64_t seed = 1000 * pi + 10 * k + std::uint64_t(100 * (g + 1));
-        McMoments w = WholeMc(p, k, n, seed), c = CameraMc(p, k, n, seed + 7);
-        INFO("g = " << g << ", pair " << pi << ", " << kCameraSamplerNames[k]);
+        McMoments w = WholeMc(p.query, k, n, seed), c = CameraMc(p, k, n, seed + 7);
+        INFO("g = " << g << ", configuration " << pi << ", " << Name(kMethods[k]));
         INFO("whole: relvar quadrature " << whole.RelativeVariance(k) << ", Monte Carlo "
                                          << w.second / (w.mean * w.mean) - 1);
         INFO("camera: relvar quadrature " << camera.RelativeVariance(k) << ", Monte Carlo "
                                           << c.second / (c.mean * c.mean) - 1);
-        // The Monte Carlo runs are precise enough that a 10% error in the second moment
-        // would stand out by several standard errors.
-        CHECK(w.se_second < 0.02 * w.second);
+        // The Monte Carlo runs are precise enough that a 10% error in the second moment of
+        // the camera step, and a 25% error in that of the whole estimator (heavy-tailed where
+        // a long segment passes close to the VRL), would stand out by 5 standard errors.
+        CHECK(w.se_second < 0.05 * w.second);
         CHECK(c.se_second < 0.02 * c.second);
         CHECK(Z(w.mean, w.se_mean, whole.first) < 5);
         CHECK(Z(w.second, w.se_second, whole.second[k]) < 5);
@@ -121,10 +111,17 @@ TEST_CASE("quadrature of the relative variance matches Monte Carlo", "[accuracy]
 TEST_CASE("the Monte Carlo comparison rejects a mismatched sampler", "[accuracy]") {
   // Quadrature for Novák against Monte Carlo of equiangular sampling (and back): the
   // relative variances differ several-fold at g = 0.9, so the check must fail.
-  Pair<double> p = MakePairs(kDefaultSeed, 1, 0.9)[0];
-  Moments camera = CameraStepMoments(p), whole = WholeMoments(p);
+  // The first of the study's configurations at g = 0.9 where they differ at least two-fold.
+  Config<double> p;
+  Moments camera;
+  for (const Config<double>& c : MakeConfigs(kDefaultSeed, 8, 0.9)) {
+    p = c;
+    camera = CameraStepMoments(p.query, p.xi_vrl);
+    if (camera.RelativeVariance(0) > 2 * camera.RelativeVariance(1)) break;
+  }
   REQUIRE(camera.RelativeVariance(0) > 2 * camera.RelativeVariance(1));
-  McMoments c_eq = CameraMc(p, 0, 200000, 1), w_eq = WholeMc(p, 0, 200000, 2);
+  Moments whole = WholeMoments(p.query);
+  McMoments c_eq = CameraMc(p, 0, 200000, 1), w_eq = WholeMc(p.query, 0, 200000, 2);
   McMoments c_nv = CameraMc(p, 1, 200000, 3);
   CHECK(Z(c_eq.second, c_eq.se_second, camera.second[1]) > 5);
   CHECK(Z(c_nv.second, c_nv.se_second, camera.second[0]) > 5);
@@ -140,13 +137,13 @@ TEST_CASE("the quadrature is converged at g = +-0.99", "[accuracy]") {
   fine.inner_max = 400000;
   fine.outer_max = 40000;
   for (double g : {-0.99, 0.99}) {
-    for (const Pair<double>& p : MakePairs(kDefaultSeed, 4, g)) {
-      Moments a = WholeMoments(p), b = WholeMoments(p, fine);
-      Moments ca = CameraStepMoments(p), cb = CameraStepMoments(p, fine);
+    for (const Config<double>& p : MakeConfigs(kDefaultSeed, 4, g)) {
+      Moments a = WholeMoments(p.query), b = WholeMoments(p.query, fine);
+      Moments ca = CameraStepMoments(p.query, p.xi_vrl), cb = CameraStepMoments(p.query, p.xi_vrl, fine);
       REQUIRE(a.converged);
       REQUIRE(b.converged);
       for (int k = 0; k < kCameraSamplerCount; ++k) {
-        INFO("g = " << g << ", " << kCameraSamplerNames[k]);
+        INFO("g = " << g << ", " << Name(kMethods[k]));
         CHECK(a.RelativeVariance(k) == Approx(b.RelativeVariance(k)).epsilon(1e-4));
         CHECK(ca.RelativeVariance(k) == Approx(cb.RelativeVariance(k)).epsilon(1e-6).margin(1e-12));
         // The central form agrees with second / first^2 - 1 (which loses digits near 0).
@@ -159,10 +156,10 @@ TEST_CASE("the quadrature is converged at g = +-0.99", "[accuracy]") {
 TEST_CASE("at g = 0 every phase-only camera sampler is equiangular", "[accuracy]") {
   // Novák and both Cauchy samplers follow the phase product only; FullProduct also follows
   // transmittance, so with sigma_t = 1 it must do better than equiangular sampling here.
-  for (const Pair<double>& p : MakePairs(kDefaultSeed, 4, 0.0)) {
-    Moments m = WholeMoments(p);
+  for (const Config<double>& p : MakeConfigs(kDefaultSeed, 4, 0.0)) {
+    Moments m = WholeMoments(p.query);
     for (int k = 1; k <= 3; ++k) CHECK(m.RelativeVariance(k) == Approx(m.RelativeVariance(0)).epsilon(1e-6));
-    CHECK(std::string(kCameraSamplerNames[4]) == "FullProduct");
+    CHECK(Name(kMethods[4]) == "full-product");
     CHECK(m.RelativeVariance(4) < m.RelativeVariance(0));
   }
 }

@@ -3,6 +3,7 @@
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
 #include <vrlis/method.hpp>
 
+#include "query_log.hpp"
 #include "scene.hpp"
 #include "vrl.hpp"
 
@@ -16,8 +17,9 @@ struct CameraSegment {
 };
 
 // Radiance along the camera ray from light scattered at a VRL point and again on the segment.
+// With a log, the query is offered to it with the weight throughput x flux (query_log.hpp).
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
-                              const Vrl& vrl, Rng& rng);
+                              const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
 
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on the VRL: the VRL point by `method`.

@@ -5,6 +5,8 @@
 
 namespace vrli {
 
+class QueryLog;
+
 struct TransportSettings {
   // How every VRL gather samples: step one and step two of the medium-to-medium gather; the
   // medium-to-surface gather and single scattering use its camera sampler.
@@ -20,6 +22,7 @@ struct TransportSettings {
   bool first_segment_only = false;  // light paths stop after their first medium segment
   int max_depth = 100;              // interactions per path (camera or light side)
   int rr_depth = 3;                 // Russian roulette from this depth on
+  QueryLog* query_log = nullptr;    // if set, records a sample of the medium-to-medium gathers
 };
 
 }  // namespace vrli
