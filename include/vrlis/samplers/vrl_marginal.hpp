@@ -38,7 +38,7 @@
 #include <string_view>
 
 #include "../angle/full_product.hpp"
-#include "novak.hpp"
+#include "../core/piecewise_linear.hpp"
 #include "vrl_point.hpp"
 
 namespace vrlis {
@@ -72,7 +72,7 @@ class VrlMarginal {
     for (int j = 0; j < kMax; ++j) xi_[j] = Real(j) / Real(kMax - 1);
     if (valid_) PlaceNodes(q);
     if (valid_ && q.camera_length > 0) Fit(q);
-    Accumulate();
+    fit_ = PiecewiseLinear<Real, kMax>(xi_, value_, count_);
   }
 
   // Step one of a medium-to-medium gather (a finite camera segment).
@@ -83,34 +83,34 @@ class VrlMarginal {
   bool valid() const { return valid_; }
   const VrlPoint<Real>& vrl_point() const { return vp_; }
 
-  Real sample(Real u) const {
-    if (!valid_) return kNaN;
-    return vp_.sample(SampleXi(u));
-  }
+  Real sample(Real u) const { return sample_pdf(u).t; }
 
   Real pdf(Real v) const {
     if (!valid_) return 0;
     Real p1 = vp_.pdf(v);
     if (!(p1 > 0)) return 0;
-    return p1 * Lerp(vp_.invert(v)) / total_;
+    return p1 * fit_.pdf(vp_.invert(v));
   }
 
+  // The density is the product of the two warps' densities at the sampled xi and v.
   SegmentSample<Real> sample_pdf(Real u) const {
-    Real v = sample(u);
-    return {v, pdf(v)};
+    if (!valid_) return {kNaN, 0};
+    SegmentSample<Real> xi = fit_.sample_pdf(u);
+    SegmentSample<Real> v = vp_.sample_pdf(xi.t);
+    return {v.t, v.pdf * xi.pdf};
   }
 
   Real invert(Real v) const {
     if (!valid_) return kNaN;
-    return Clamp(CdfXi(vp_.invert(v)), Real(0), Real(1));
+    return fit_.cdf(vp_.invert(v));
   }
 
   // The fitted density over xi = VrlPoint.invert(v) (for studies): value(xi) / total.
-  Real xi_density(Real xi) const { return Lerp(xi) / total_; }
+  Real xi_density(Real xi) const { return fit_.pdf(xi); }
   static constexpr Real node(int j) { return Real(j) / Real(kNodes - 1); }
   // The fit's nodes in xi (count() of them): the uniform ones and the closest point.
-  int count() const { return count_; }
-  Real fitted_node(int j) const { return xi_[j]; }
+  int count() const { return fit_.count(); }
+  Real fitted_node(int j) const { return fit_.node(j); }
 
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
@@ -196,48 +196,11 @@ class VrlMarginal {
     for (Real& x : value_) x = std::max(x, kRelativeFloor * largest);
   }
 
-  void Accumulate() {
-    cdf_[0] = 0;
-    for (int j = 0; j + 1 < count_; ++j) cdf_[j + 1] = cdf_[j] + (value_[j] + value_[j + 1]) / 2 * (xi_[j + 1] - xi_[j]);
-    total_ = cdf_[count_ - 1];
-  }
-
-  int Interval(Real xi) const {
-    int j = 0;
-    while (j < count_ - 2 && xi_[j + 1] <= xi) ++j;
-    return j;
-  }
-
-  // Position inside interval j, in [0, 1].
-  Real Within(Real xi, int j) const { return Clamp((xi - xi_[j]) / (xi_[j + 1] - xi_[j]), Real(0), Real(1)); }
-
-  Real Lerp(Real xi) const {
-    int j = Interval(xi);
-    Real s = Within(xi, j);
-    return value_[j] + s * (value_[j + 1] - value_[j]);
-  }
-
-  Real CdfXi(Real xi) const {
-    int j = Interval(xi);
-    Real s = Within(xi, j);
-    return (cdf_[j] + (value_[j] + (value_[j] + s * (value_[j + 1] - value_[j]))) / 2 * s * (xi_[j + 1] - xi_[j])) /
-           total_;
-  }
-
-  Real SampleXi(Real u) const {
-    Real target = u * total_;
-    int j = 0;
-    while (j < count_ - 2 && !(cdf_[j + 1] > target)) ++j;
-    Real area = cdf_[j + 1] - cdf_[j];
-    Real w = area > 0 ? Clamp((target - cdf_[j]) / area, Real(0), Real(1)) : Real(0);
-    return Clamp(xi_[j] + SampleLinear(w, value_[j], value_[j + 1]) * (xi_[j + 1] - xi_[j]), Real(0), Real(1));
-  }
-
   VrlPoint<Real> vp_;
   bool valid_ = false;
   int count_ = kNodes;
-  std::array<Real, kMax> xi_, value_, cdf_;
-  Real total_ = 1;
+  std::array<Real, kMax> xi_, value_;  // the fit's nodes and values while it is built
+  PiecewiseLinear<Real, kMax> fit_;     // over xi
 };
 
 // Its entry in the run-time sampler tables (method.hpp).
