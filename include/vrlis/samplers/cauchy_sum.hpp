@@ -28,7 +28,14 @@ class CauchySumAngle {
       case 0: return u * width_;
       case 1: return fit_.lobe[0].inverse_primitive(u * mass_);
     }
-    return SampleQuadratic(u * mass_);
+    return SampleQuadratic(u * mass_).t;
+  }
+
+  // The two-lobe density from the offsets to both peaks the quadratic was written in.
+  SegmentSample<Real> sample_pdf(Real u) const {
+    if (fit_.count == 2) return SampleQuadratic(u * mass_);
+    Real delta = sample(u);
+    return {delta, pdf(delta)};
   }
 
   Real pdf(Real delta) const {
@@ -54,7 +61,8 @@ class CauchySumAngle {
   // (F(c) is then exactly 0 or the whole mass: a tiny interval keeps its digits).
   // In float the root is solved in double: K is monotone in u, but a float solve of an
   // ill-conditioned quadratic is not, and where the density is low its errors reverse samples.
-  Real SampleQuadratic(Real s) const {
+  // Returns the offset and its density (pdf()), the latter from x and the offsets e_k.
+  SegmentSample<Real> SampleQuadratic(Real s) const {
     using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
     const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
     Real c = Clamp((c1.scale() < c2.scale() ? c1 : c2).location(), Real(0), width_);
@@ -74,7 +82,13 @@ class CauchySumAngle {
     // form does not cancel.
     W x = b > 0 ? -2 * c0 / (b + root) : (-b + root) / (2 * a);
     Real delta = Real(c + x);
-    return delta >= 0 ? std::min(delta, width_) : Real(0);  // also maps NaN to 0
+    if (!(delta >= 0 && delta <= width_)) {  // clamped (NaN to 0): the density where it lands
+      delta = delta >= 0 ? width_ : Real(0);
+      return {delta, pdf(delta)};
+    }
+    // gamma_k / ((delta - mu_k)^2 + gamma_k^2) for both lobes, over one division.
+    W q1 = Sqr(e1 + x) + g1 * g1, q2 = Sqr(e2 + x) + g2 * g2;
+    return {delta, Real((g1 * q2 + g2 * q1) / (q1 * q2 * W(mass_)))};
   }
 
   CauchyLobes<Real> fit_;

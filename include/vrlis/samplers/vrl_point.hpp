@@ -64,20 +64,7 @@ class VrlPoint {
 
   bool valid() const { return valid_; }
 
-  Real sample(Real u) const {
-    if (!valid_) return kNaN;
-    Real length = tmax_ - tmin_;
-    if (!Representable()) return tmin_;
-    if (k_ == 0) return std::min(tmin_ + u * length, tmax_);
-    Real d = u * total_, xb = xa_ + k_ * length, v;
-    if (xa_ >= 0)  // moving away from v0 from the near end: no cancellation
-      v = tmin_ + Outward(xa_, d) / k_;
-    else if (xb <= 0)
-      v = tmax_ - Outward(-xb, total_ - d) / k_;
-    else  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
-      v = tmin_ + (std::sinh(std::asinh(xa_) + d) - xa_) / k_;
-    return Clamp(v, tmin_, tmax_);
-  }
+  Real sample(Real u) const { return sample_pdf(u).t; }
 
   Real pdf(Real v) const {
     if (!valid_ || !(v >= tmin_ && v <= tmax_) || !Representable()) return 0;
@@ -86,9 +73,31 @@ class VrlPoint {
     return k_ / (total_ * std::sqrt(1 + x * x));
   }
 
+  // The density from the sample's hyperbolic functions: sqrt(1 + x^2) = cosh(asinh(x)).
   SegmentSample<Real> sample_pdf(Real u) const {
-    Real v = sample(u);
-    return {v, pdf(v)};
+    if (!valid_) return {kNaN, 0};
+    Real length = tmax_ - tmin_;
+    if (!Representable()) return {tmin_, 0};
+    if (k_ == 0) return {std::min(tmin_ + u * length, tmax_), 1 / length};
+    Real d = u * total_, xb = xa_ + k_ * length, v, root;  // root = sqrt(1 + x(v)^2)
+    if (xa_ >= 0) {  // moving away from v0 from the near end: no cancellation
+      Outward step(xa_, d);
+      v = tmin_ + step.dx / k_;
+      root = step.root;
+    } else if (xb <= 0) {
+      Outward step(-xb, total_ - d);
+      v = tmax_ - step.dx / k_;
+      root = step.root;
+    } else {  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
+      Real y = std::asinh(xa_) + d;
+      v = tmin_ + (std::sinh(y) - xa_) / k_;
+      root = std::cosh(y);
+    }
+    if (!(v >= tmin_ && v <= tmax_)) {  // clamped: the density where it lands
+      v = Clamp(v, tmin_, tmax_);
+      return {v, pdf(v)};
+    }
+    return {v, k_ / (total_ * root)};
   }
 
   Real invert(Real v) const {
@@ -102,10 +111,16 @@ class VrlPoint {
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
   bool Representable() const { return RepresentableLength(tmax_ - tmin_); }
-  // sinh(asinh(x0) + d) - x0 for x0 >= 0, d >= 0, as a sum of positive terms.
-  static Real Outward(Real x0, Real d) {
-    return 2 * x0 * Sqr(std::sinh(d / 2)) + std::sqrt(1 + x0 * x0) * std::sinh(d);
-  }
+  // For x0 >= 0, d >= 0 and x1 = sinh(asinh(x0) + d): x1 - x0 and sqrt(1 + x1^2) = cosh(...),
+  // both as sums of positive terms.
+  struct Outward {
+    Real dx, root;
+    Outward(Real x0, Real d) {
+      Real half = 2 * Sqr(std::sinh(d / 2)), sh = std::sinh(d), r0 = std::sqrt(1 + x0 * x0);
+      dx = x0 * half + r0 * sh;
+      root = r0 * (1 + half) + x0 * sh;
+    }
+  };
 
   Real tmin_, tmax_;
   bool valid_ = false;
