@@ -66,10 +66,20 @@ class CauchySumAngle {
     using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
     const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
     Real c = Clamp((c1.scale() < c2.scale() ? c1 : c2).location(), Real(0), width_);
-    W k = c == 0 ? W(s) : c == width_ ? W(s) - W(mass_) : W(s) - (W(c1.primitive(c)) + W(c2.primitive(c)));
     W e1 = W(c) - c1.location(), e2 = W(c) - c2.location(), g1 = c1.scale(), g2 = c2.scale();
     W p1 = g1 * g1 + e1 * e1, p2 = g2 * g2 + e2 * e2;
+    // (cos K, sin K) up to a positive factor (the equation is homogeneous in them). Inside,
+    // F(c) = arg z1(c) + arg z2(c) = arg w with w = z1(c) z2(c), z_k(c) = Re_k(c) + i c, so
+    // e^{iK} is e^{is} rotated back by w: no arctangent for F(c).
+    W k = c == width_ ? W(s) - W(mass_) : W(s);
     W sn = std::sin(k), cs = std::cos(k);
+    if (c > 0 && c < width_) {
+      W r1 = g1 - W(c1.location()) * e1 / g1, r2 = g2 - W(c2.location()) * e2 / g2;
+      W re = r1 * r2 - W(c) * W(c), im = W(c) * (r1 + r2);
+      W rotated_cs = cs * re + sn * im;
+      sn = sn * re - cs * im;
+      cs = rotated_cs;
+    }
     W a = (g2 * e1 + g1 * e2) * cs - (e1 * e2 - g1 * g2) * sn;
     W b = (g2 * p1 + g1 * p2) * cs - (p1 * e2 + p2 * e1) * sn;
     W c0 = -p1 * p2 * sn;
