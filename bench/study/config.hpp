@@ -93,8 +93,8 @@ VrlPointQuery<Real> VrlQuery(const Pair<Real>& p) {
 // Step one following the marginal of the whole integrand (VrlMarginal): the camera
 // segment, g and sigma_t as well.
 template <typename Real>
-VrlMarginalQuery<Real> MarginalQuery(const Pair<Real>& p) {
-  return {p.xl, p.wl, Real(0), p.t, p.xc, p.wc, p.s, p.g, p.sigma_t};
+MediumGatherQuery<Real> MarginalQuery(const Pair<Real>& p) {
+  return {{p.xc, p.wc, Real(0), p.s}, {p.xl, p.wl, p.t}, {p.g, p.sigma_t, p.sigma_t}};
 }
 
 template <typename Real>
