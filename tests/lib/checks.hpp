@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "integrand.hpp"
@@ -164,6 +165,31 @@ DerivativeCheck CheckDerivative(const S& s, double u0, double scale_h, double tm
     if (!done) ++r.skipped;
   }
   return r;
+}
+
+}  // namespace vrlis_test
+
+namespace vrlis_test {
+
+// The smallest and largest of f at 17 points of x -+ dx (clamped to [lo, hi]): the values
+// f takes within the rounding dx of its argument, a spike inside included.
+template <typename F>
+std::pair<double, double> RangeAround(F f, double x, double dx, double lo, double hi) {
+  std::pair<double, double> r{kInf, 0};
+  for (int i = -8; i <= 8; ++i) {
+    double v = f(std::clamp(x + dx * i / 8, lo, hi));
+    r = {std::min(r.first, v), std::max(r.second, v)};
+  }
+  return r;
+}
+
+// Whether a density computed alongside a sample (sample_pdf) equals the density evaluated
+// at the sample up to rounding: within [lo, hi], the range the evaluation takes over the
+// rounding of its arguments, widened by 64 ulps, or both below what Real represents.
+template <typename Real>
+bool FusedPdfAgrees(Real fused, std::pair<double, double> range) {
+  const double eps = std::numeric_limits<Real>::epsilon(), tiny = 1e6 * double(std::numeric_limits<Real>::min());
+  return double(fused) >= range.first * (1 - 64 * eps) - tiny && double(fused) <= range.second * (1 + 64 * eps) + tiny;
 }
 
 }  // namespace vrlis_test

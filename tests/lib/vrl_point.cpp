@@ -135,7 +135,7 @@ void CheckVrlPoint(const LineConfig& wanted, std::uint64_t seed) {
   long out_of_range = 0, bad_pdf = 0;
   double worst_round_trip = 0;
   const double eps = std::numeric_limits<Real>::epsilon();
-  long round_trip_failures = 0;
+  long round_trip_failures = 0, fused_failures = 0;
   for (std::size_t i = 0; i < u.size(); ++i) {
     Real vi = s.sample(u[i]);
     Real pi = s.pdf(vi);
@@ -149,7 +149,13 @@ void CheckVrlPoint(const LineConfig& wanted, std::uint64_t seed) {
     double budget = 16 * eps * (1 + double(pi) * (std::abs(v[i]) + std::abs(c.tmin) + std::abs(c.tmax)));
     if (!(err <= std::max(budget, Tolerance<Real>::round_trip))) ++round_trip_failures;
     if (parallel && !(std::abs(double(pi) * (c.tmax - c.tmin) - 1) <= 4 * eps)) ++bad_pdf;  // uniform
+    // sample_pdf: the same v, and pdf(v) up to the rounding of v.
+    vrlis::SegmentSample<Real> f = s.sample_pdf(u[i]);
+    auto range = RangeAround([&](double x) { return double(s.pdf(Real(x))); }, v[i],
+                             8 * eps * (std::abs(v[i]) + std::abs(c.tmin) + std::abs(c.tmax)), c.tmin, c.tmax);
+    if (!(f.t == vi) || !FusedPdfAgrees(f.pdf, range)) ++fused_failures;
   }
+  CHECK(fused_failures == 0);
   CHECK(out_of_range == 0);
   CHECK(bad_pdf == 0);
   summary.Max(label, "round_trip_error", worst_round_trip, c.name);
@@ -205,4 +211,19 @@ TEMPLATE_TEST_CASE("VrlPoint on intersecting lines: finite, in range, invertible
     CHECK(bad == 0);
     CHECK(not_increasing == 0);
   }
+}
+
+TEMPLATE_TEST_CASE("VrlPoint: sample_pdf on a zero-length VRL and on invalid input", "[lib][vrlpoint][fused]", float,
+                   double) {
+  using Real = TestType;
+  LineConfig c = MakeLines("zero length", 1, 1, 0.5, 0.3, 1.0);
+  vrlis::VrlPoint<Real> point(ToPointQuery<Real>(c));
+  REQUIRE(point.valid());
+  CHECK(point.sample_pdf(Real(0.5)).t == Real(1));
+  CHECK(point.sample_pdf(Real(0.5)).pdf == 0);
+  c.tmax = 0;  // reversed
+  vrlis::VrlPoint<Real> reversed(ToPointQuery<Real>(c));
+  REQUIRE_FALSE(reversed.valid());
+  CHECK(std::isnan(reversed.sample_pdf(Real(0.5)).t));
+  CHECK(reversed.sample_pdf(Real(0.5)).pdf == 0);
 }

@@ -59,9 +59,10 @@ template <typename Real>
 Vec3<Real> Cast(V3 a) { return {Real(a.x), Real(a.y), Real(a.z)}; }
 
 template <typename Real>
-VrlMarginalQuery<Real> Query(const Config& c) {
-  return {Cast<Real>(c.xl), Cast<Real>(c.wl), Real(0), Real(c.t), Cast<Real>(c.xc), Cast<Real>(c.wc),
-          Real(c.s), Real(c.g), Real(c.sigma_t)};
+MediumGatherQuery<Real> Query(const Config& c) {
+  return {{Cast<Real>(c.xc), Cast<Real>(c.wc), Real(0), Real(c.s)},
+          {Cast<Real>(c.xl), Cast<Real>(c.wl), Real(c.t)},
+          {Real(c.g), Real(c.sigma_t), Real(c.sigma_t)}};
 }
 
 double Hg(double g, V3 a, V3 b) {  // HG(g, a . b) for unit a, b, exact near both peaks
@@ -119,20 +120,27 @@ std::vector<double> VBreaks(const Config& c, const M& m) {
   return x;
 }
 
+// unbounded: the camera segment extended to tmax = +infinity (the VRL placed as for the
+// bounded one); only with extinction, which makes the integral converge.
 template <typename Real>
-std::vector<Config> Configs(int count, std::uint64_t seed) {
+std::vector<Config> Configs(int count, std::uint64_t seed, bool unbounded = false) {
   std::mt19937_64 rng(seed);
   std::vector<Config> out;
   const double gs[] = {-0.99, -0.9, -0.5, 0, 0.3, 0.7, 0.9, 0.99};
   const double sigmas[] = {0, 0.3, 1, 3};
-  for (int i = 0; i < count; ++i) out.push_back(RandomConfig(rng, gs[i % 8], sigmas[(i / 8) % 4]));
+  for (int i = 0; i < count; ++i) {
+    out.push_back(RandomConfig(rng, gs[i % 8], unbounded ? sigmas[1 + (i / 8) % 3] : sigmas[(i / 8) % 4]));
+    if (unbounded) out.back().s = std::numeric_limits<double>::infinity();
+  }
   return out;
 }
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", "", float, double) {
+TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1, invert undoes sample, sample_pdf is {sample, pdf}", "", float,
+                   double) {
   using Real = TestType;
+  const double eps = std::numeric_limits<Real>::epsilon();
   const double tol_round = std::is_same_v<Real, float> ? 2e-3 : 1e-9;
   const double tol_norm = std::is_same_v<Real, float> ? 2e-3 : 1e-7;
   std::mt19937_64 rng(7);
@@ -143,6 +151,7 @@ TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", 
     INFO("g " << c.g << " sigma_t " << c.sigma_t);
     CHECK(std::abs(norm - 1) < tol_norm);
     double worst = 0;
+    long fused_failures = 0;
     for (int i = 0; i <= 200; ++i) {
       double u = i < 200 ? U(rng) : 1.0;
       if (i == 0) u = 0;
@@ -152,8 +161,19 @@ TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", 
       REQUIRE(v <= Real(c.t));
       REQUIRE(m.pdf(v) > 0);
       worst = std::max(worst, std::abs(double(m.invert(v)) - u));
+      // sample_pdf: the same v, and a density pdf takes within the rounding of v.
+      SegmentSample<Real> f = m.sample_pdf(Real(u));
+      REQUIRE(f.t == v);
+      double lo = std::numeric_limits<double>::infinity(), hi = 0, dv = 8 * eps * (double(v) + c.t);
+      for (int k = -8; k <= 8; ++k) {
+        double p = double(m.pdf(Real(std::clamp(double(v) + dv * k / 8, 0.0, c.t))));
+        lo = std::min(lo, p);
+        hi = std::max(hi, p);
+      }
+      fused_failures += !(double(f.pdf) >= lo * (1 - 64 * eps) && double(f.pdf) <= hi * (1 + 64 * eps));
     }
     CHECK(worst < tol_round);
+    CHECK(fused_failures == 0);
   };
   const auto configs = Configs<Real>(64, 11);
   for (size_t i = 0; i < configs.size(); ++i) {
@@ -161,16 +181,20 @@ TEMPLATE_TEST_CASE("VrlMarginal: pdf integrates to 1 and invert undoes sample", 
     // Every fourth configuration also with the optional node at the closest point.
     if (i % 4 == 0) check(configs[i], VrlMarginal<Real, 8, 2, true, true>(Query<Real>(configs[i])));
   }
+  for (const Config& c : Configs<Real>(24, 13, true)) check(c, VrlMarginal<Real>(Query<Real>(c)));
 }
 
 TEMPLATE_TEST_CASE("VrlMarginal: chi-square of samples against the pdf", "", float, double) {
   using Real = TestType;
-  const int kConfigs = 24, kBins = 48, kSamples = 40000;
-  const double alpha = 0.01 / (2 * kConfigs);  // Bonferroni over every chi-square test in this file
+  const int kConfigs = 24, kUnbounded = 8, kBins = 48, kSamples = 40000;
+  // Bonferroni over every chi-square test in this file (float and double).
+  const double alpha = 0.01 / (2 * (kConfigs + kUnbounded));
   std::mt19937_64 rng(20240611);
   std::uniform_real_distribution<double> U(0, 1);
   int failures = 0;
-  for (const Config& c : Configs<Real>(kConfigs, 5)) {
+  std::vector<Config> configs = Configs<Real>(kConfigs, 5);
+  for (const Config& c : Configs<Real>(kUnbounded, 6, true)) configs.push_back(c);
+  for (const Config& c : configs) {
     VrlMarginal<Real> m(Query<Real>(c));
     REQUIRE(m.valid());
     // Bins of equal VrlPoint probability (fine where the density is peaked), refined at the nodes.
@@ -221,8 +245,9 @@ TEMPLATE_TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased",
   std::uniform_real_distribution<double> U(0, 1);
   std::mt19937_64 crng(31);
   const double gs[] = {-0.9, -0.3, 0, 0.5, 0.9};
-  for (int i = 0; i < 10; ++i) {
+  for (int i = 0; i < 15; ++i) {
     Config c = RandomConfig(crng, gs[i % 5], i < 5 ? 1.0 : 0.4);
+    if (i >= 10) c.s = std::numeric_limits<double>::infinity();  // an unbounded camera segment
     // Reference: Int dv Int du f, the inner integral in the camera step's angle variable
     // (f / (dtheta/du) is bounded), split at the point lobe's peak; the outer over v, split
     // at the closest point and refined towards it.
@@ -241,8 +266,8 @@ TEMPLATE_TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased",
       double pk = phase.point_peak();
       if (pk > 0 && pk < dom.width()) x.push_back(pk);
       return Pieces([&](double delta) {
-        double u = dom.t_at(delta);
-        return Integrand(c, u, v) / dom.dtheta_dt(u);
+        double u = dom.t_at(delta), f = Integrand(c, u, v) / dom.dtheta_dt(u);
+        return std::isfinite(f) ? f : 0.0;  // 0 / 0 where an unbounded segment reaches max<double>
       }, x, 1e-9);
     };
     VrlMarginal<double> md(Query<double>(c));
@@ -273,7 +298,7 @@ TEMPLATE_TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased",
     }
     double mean = sum / kSamples, var = std::max(sum2 / kSamples - mean * mean, 0.0);
     double se = std::sqrt(var / kSamples);
-    INFO("g " << c.g << " sigma_t " << c.sigma_t << " mean " << mean << " reference " << reference << " se " << se
+    INFO("g " << c.g << " sigma_t " << c.sigma_t << " camera length " << c.s << " mean " << mean << " reference " << reference << " se " << se
               << " relative variance " << var / (reference * reference));
     CHECK(std::abs(mean - reference) <= 4 * se + 1e-6 * reference);
   }
@@ -301,75 +326,77 @@ TEMPLATE_TEST_CASE("VrlMarginal: degenerate and invalid input", "", float, doubl
     REQUIRE(m.pdf(tmax + 1) == 0);
     REQUIRE(m.pdf(tmin - 1) == 0);
   };
-  VrlMarginalQuery<Real> base;
-  base.origin = {0, 1, 0};
-  base.dir = {1, 0, 0};
-  base.tmin = 0;
-  base.tmax = 2;
-  base.camera_origin = {0, 0, 0};
-  base.camera_dir = {0, 0, 1};
-  base.camera_length = 3;
-  base.g = Real(0.7);
-  base.sigma_t = 1;
+  MediumGatherQuery<Real> base;
+  base.vrl = {{0, 1, 0}, {1, 0, 0}, 2};
+  base.camera = {{0, 0, 0}, {0, 0, 1}, 0, 3};
+  base.medium = {Real(0.7), 1, 1};
   check_finite(VrlMarginal<Real>(base), 0, 2, true);
 
   SECTION("parallel lines") {
     auto q = base;
-    q.dir = {0, 0, 1};
+    q.vrl.dir = {0, 0, 1};
     check_finite(VrlMarginal<Real>(q), 0, 2, true);
-    q.origin = {0, 0, -1};  // on the camera line
+    q.vrl.origin = {0, 0, -1};  // on the camera line
     check_finite(VrlMarginal<Real>(q), 0, 2, false);
   }
   SECTION("intersecting lines, the VRL through the camera segment") {
     auto q = base;
-    q.origin = {-1, 0, 1};
+    q.vrl.origin = {-1, 0, 1};
     check_finite(VrlMarginal<Real>(q), 0, 2, false);
-    q.g = Real(-0.99);
+    q.medium.g = Real(-0.99);
     check_finite(VrlMarginal<Real>(q), 0, 2, false);
-    q.g = Real(0.99);
+    q.medium.g = Real(0.99);
     check_finite(VrlMarginal<Real>(q), 0, 2, false);
   }
-  SECTION("zero-length VRL: tmin with pdf 0") {
+  SECTION("zero-length VRL: 0 with pdf 0") {
     auto q = base;
-    q.tmax = q.tmin = 1;
+    q.vrl.length = 0;
     VrlMarginal<Real> m(q);
     REQUIRE(m.valid());
-    REQUIRE(m.sample(Real(0.5)) == 1);
-    REQUIRE(m.pdf(1) == 0);
-    REQUIRE(m.invert(1) == 0);
+    REQUIRE(m.sample(Real(0.5)) == 0);
+    REQUIRE(m.pdf(0) == 0);
+    REQUIRE(m.sample_pdf(Real(0.5)).pdf == 0);
+    REQUIRE(m.invert(0) == 0);
   }
   SECTION("zero-length camera segment: VrlPoint's density") {
     auto q = base;
-    q.camera_length = 0;
+    q.camera.tmax = q.camera.tmin;
     VrlMarginal<Real> m(q);
     check_finite(m, 0, 2, true);
-    VrlPoint<Real> vp(q.vrl_point_query());
+    VrlPoint<Real> vp(q);
     for (Real v : {Real(0.1), Real(1), Real(1.9)}) REQUIRE(m.pdf(v) == Approx(vp.pdf(v)).epsilon(1e-4));
   }
   SECTION("extreme extinction and far away") {
     auto q = base;
-    q.sigma_t = Real(1e4);
+    q.medium.sigma_t = q.medium.sigma_s = Real(1e4);
     check_finite(VrlMarginal<Real>(q), 0, 2, true);
-    q.sigma_t = 1;
-    q.origin = {0, Real(1e4), 0};
+    q.medium.sigma_t = q.medium.sigma_s = 1;
+    q.vrl.origin = {0, Real(1e4), 0};
     check_finite(VrlMarginal<Real>(q), 0, 2, true);
-    q.origin = {0, Real(1e-6), 0};
+    q.vrl.origin = {0, Real(1e-6), 0};
     check_finite(VrlMarginal<Real>(q), 0, 2, true);
   }
-  SECTION("invalid input: NaN samples, pdf 0") {
-    std::vector<VrlMarginalQuery<Real>> bad(8, base);
-    bad[0].origin.x = nan;
-    bad[1].dir = {1, 1, 0};
-    bad[2].tmax = -1;
-    bad[3].camera_length = -1;
-    bad[4].camera_length = std::numeric_limits<Real>::infinity();
-    bad[5].g = 1;
-    bad[6].sigma_t = -1;
-    bad[7].camera_dir = {0, 0, nan};
+  SECTION("invalid input: Validate's error, NaN samples, pdf 0") {
+    std::vector<MediumGatherQuery<Real>> bad(10, base);
+    bad[0].vrl.origin.x = nan;
+    bad[1].vrl.dir = {1, 1, 0};
+    bad[2].vrl.length = -1;
+    bad[3].camera.tmax = -1;
+    bad[4].camera.tmin = -std::numeric_limits<Real>::infinity();
+    bad[5].medium.g = 1;
+    bad[6].medium.sigma_t = -1;
+    bad[7].camera.dir = {0, 0, nan};
+    bad[8].medium.sigma_s = 2;  // above sigma_t
+    bad[9].camera.origin.x = std::numeric_limits<Real>::max();
     for (const auto& q : bad) {
       VrlMarginal<Real> m(q);
+      INFO(Describe(Validate(q)));
+      REQUIRE(Validate(q) != QueryError::None);
+      REQUIRE(m.error() == Validate(q));
       REQUIRE_FALSE(m.valid());
       REQUIRE(std::isnan(m.sample(Real(0.5))));
+      REQUIRE(std::isnan(m.sample_pdf(Real(0.5)).t));
+      REQUIRE(m.sample_pdf(Real(0.5)).pdf == 0);
       REQUIRE(std::isnan(m.invert(Real(0.5))));
       REQUIRE(m.pdf(Real(0.5)) == 0);
     }

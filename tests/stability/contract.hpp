@@ -140,6 +140,8 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
   v.os.precision(9);
   bool valid = VrlQueryValid(q);
   if (s.valid() != valid) return (v << "valid() = " << s.valid() << ", expected " << valid).str();
+  if (s.error() != vrlis::Validate(q) || valid != (s.error() == vrlis::QueryError::None))
+    return (v << "error() = " << vrlis::Describe(s.error()) << ", Validate: " << vrlis::Describe(vrlis::Validate(q))).str();
   const Real probes[] = {q.tmin, q.tmax, Real(0), std::numeric_limits<Real>::infinity(),
                          -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
   if (!valid) {

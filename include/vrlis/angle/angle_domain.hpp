@@ -12,6 +12,12 @@
 
 namespace vrlis {
 
+// A point of the segment at an angle offset: its parameter t and the Jacobian dtheta/dt.
+template <typename Real>
+struct AnglePoint {
+  Real t = 0, dtheta_dt = 0;
+};
+
 template <typename Real>
 class AngleDomain {
  public:
@@ -27,6 +33,8 @@ class AngleDomain {
     n_ = on_line_ ? AnyPerpendicular(q.dir) : (Real(1) / h_) * perp;
     h_ = std::max(h_, floor);
     tan_a_ = (tmin_ - u0_) / h_;
+    Real r = std::abs(tan_a_);  // cos(theta_a) = 1 / sqrt(1 + A^2), without overflowing A^2
+    cos_a_ = r > 1 ? 1 / (r * std::sqrt(1 + Sqr(1 / r))) : 1 / std::sqrt(1 + r * r);
     width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
                                   : Atan2(Real(1), tan_a_);
   }
@@ -54,13 +62,20 @@ class AngleDomain {
   }
 
   // The inverse of offset_at: tan(theta_a + delta) written with the addition formula.
-  Real t_at(Real delta) const {
+  Real t_at(Real delta) const { return point_at(delta).t; }
+
+  // t_at(delta) and dtheta/dt there, from the sine and cosine t_at needs anyway: with
+  // denom = cos(delta) - tan(theta_a) sin(delta) = cos(theta) / cos(theta_a),
+  // dtheta/dt = cos^2(theta) / h = (denom cos(theta_a))^2 / h. This equals dtheta_dt(t) of
+  // the rounded t to a few ulps (tan of the computed t's angle is (A c + s) / denom).
+  AnglePoint<Real> point_at(Real delta) const {
     Real s = std::sin(delta), c = std::cos(delta);
     Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
     Real step = denom > 0 ? s / denom : std::numeric_limits<Real>::infinity();
-    if (!(step > 0)) return tmin_;  // h (1 + A^2) may overflow; never multiply it by 0
+    if (!(step > 0)) return {tmin_, dtheta_dt(tmin_)};  // h (1 + A^2) may overflow; never multiply it by 0
     Real t = tmin_ + (h_ + (tmin_ - u0_) * tan_a_) * step;
-    return Clamp(t, tmin_, LargestSample());
+    if (!(t < LargestSample())) return {LargestSample(), dtheta_dt(LargestSample())};  // clamped: of the clamped t
+    return {std::max(t, tmin_), Sqr(denom * cos_a_) / h_};
   }
 
   // dtheta / dt = h / (h^2 + (t - u0)^2).
@@ -75,7 +90,7 @@ class AngleDomain {
   // Samples must be finite even on an unbounded segment.
   Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
 
-  Real tmin_, tmax_, u0_, h_, tan_a_, width_;
+  Real tmin_, tmax_, u0_, h_, tan_a_, cos_a_, width_;
   Vec3<Real> n_;
   bool on_line_;
 };

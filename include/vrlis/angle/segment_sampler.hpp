@@ -1,6 +1,8 @@
 #pragma once
 // Every camera-segment sampler is a density over delta = theta - theta_a carried back to
-// the segment parameter t. This adapter does the carrying once, for all of them.
+// the segment parameter t. This adapter does the carrying once, for all of them. A
+// Distribution offers sample(u), pdf(delta), cdf(delta) and sample_pdf(u) -> {delta, pdf}
+// over [0, width].
 //
 // Contract (tested in tests/):
 // - valid() is Validate(query) == QueryError::None. For an invalid query, sample() and
@@ -51,13 +53,14 @@ class SegmentSampler {
     return dist_.pdf(domain_.offset_at(t)) * domain_.dtheta_dt(t);
   }
 
-  // sample(u) and pdf() of it in one call (pbrt's Sample(u, &pdf)): the density is taken
-  // from the sampled angle offset, so the offset is not recomputed from t.
+  // sample(u) and pdf() of it in one call (pbrt's Sample(u, &pdf)): the distribution's
+  // density comes from what its sampling computed and the Jacobian from the sine and cosine
+  // that carry the offset to t, so no offset or slope is recomputed from t.
   SegmentSample<Real> sample_pdf(Real u) const {
     if (!usable_) return {sample(u), 0};
-    Real delta = dist_.sample(u);
-    Real t = domain_.t_at(delta);
-    return {t, dist_.pdf(delta) * domain_.dtheta_dt(t)};
+    SegmentSample<Real> d = dist_.sample_pdf(u);
+    AnglePoint<Real> p = domain_.point_at(d.t);
+    return {p.t, d.pdf * p.dtheta_dt};
   }
 
   Real invert(Real t) const {

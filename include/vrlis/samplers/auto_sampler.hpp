@@ -72,6 +72,7 @@ class AutoAngle {
   Real sample(Real u) const { return fit_ ? fit_->sample(u) : uniform_.sample(u); }
   Real pdf(Real delta) const { return fit_ ? fit_->pdf(delta) : uniform_.pdf(delta); }
   Real cdf(Real delta) const { return fit_ ? fit_->cdf(delta) : uniform_.cdf(delta); }
+  SegmentSample<Real> sample_pdf(Real u) const { return fit_ ? fit_->sample_pdf(u) : uniform_.sample_pdf(u); }
 
  private:
   UniformAngle<Real> uniform_;

@@ -34,6 +34,11 @@ class CauchyMixtureAngle {
   }
 
   Real pdf(Real delta) const { return Mix(delta, &TruncatedCauchy<Real>::density, 1 / width_); }
+  // Both components' densities are needed at the sample whichever one produced it.
+  SegmentSample<Real> sample_pdf(Real u) const {
+    Real delta = sample(u);
+    return {delta, pdf(delta)};
+  }
   Real cdf(Real delta) const { return Mix(delta, &TruncatedCauchy<Real>::primitive, delta / width_); }
   Real weight0() const { return weight0_; }
 

@@ -28,7 +28,14 @@ class CauchySumAngle {
       case 0: return u * width_;
       case 1: return fit_.lobe[0].inverse_primitive(u * mass_);
     }
-    return SampleQuadratic(u * mass_);
+    return SampleQuadratic(u * mass_).t;
+  }
+
+  // The two-lobe density from the offsets to both peaks the quadratic was written in.
+  SegmentSample<Real> sample_pdf(Real u) const {
+    if (fit_.count == 2) return SampleQuadratic(u * mass_);
+    Real delta = sample(u);
+    return {delta, pdf(delta)};
   }
 
   Real pdf(Real delta) const {
@@ -54,14 +61,25 @@ class CauchySumAngle {
   // (F(c) is then exactly 0 or the whole mass: a tiny interval keeps its digits).
   // In float the root is solved in double: K is monotone in u, but a float solve of an
   // ill-conditioned quadratic is not, and where the density is low its errors reverse samples.
-  Real SampleQuadratic(Real s) const {
+  // Returns the offset and its density (pdf()), the latter from x and the offsets e_k.
+  SegmentSample<Real> SampleQuadratic(Real s) const {
     using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
     const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
     Real c = Clamp((c1.scale() < c2.scale() ? c1 : c2).location(), Real(0), width_);
-    W k = c == 0 ? W(s) : c == width_ ? W(s) - W(mass_) : W(s) - (W(c1.primitive(c)) + W(c2.primitive(c)));
     W e1 = W(c) - c1.location(), e2 = W(c) - c2.location(), g1 = c1.scale(), g2 = c2.scale();
     W p1 = g1 * g1 + e1 * e1, p2 = g2 * g2 + e2 * e2;
+    // (cos K, sin K) up to a positive factor (the equation is homogeneous in them). Inside,
+    // F(c) = arg z1(c) + arg z2(c) = arg w with w = z1(c) z2(c), z_k(c) = Re_k(c) + i c, so
+    // e^{iK} is e^{is} rotated back by w: no arctangent for F(c).
+    W k = c == width_ ? W(s) - W(mass_) : W(s);
     W sn = std::sin(k), cs = std::cos(k);
+    if (c > 0 && c < width_) {
+      W r1 = g1 - W(c1.location()) * e1 / g1, r2 = g2 - W(c2.location()) * e2 / g2;
+      W re = r1 * r2 - W(c) * W(c), im = W(c) * (r1 + r2);
+      W rotated_cs = cs * re + sn * im;
+      sn = sn * re - cs * im;
+      cs = rotated_cs;
+    }
     W a = (g2 * e1 + g1 * e2) * cs - (e1 * e2 - g1 * g2) * sn;
     W b = (g2 * p1 + g1 * p2) * cs - (p1 * e2 + p2 * e1) * sn;
     W c0 = -p1 * p2 * sn;
@@ -74,7 +92,13 @@ class CauchySumAngle {
     // form does not cancel.
     W x = b > 0 ? -2 * c0 / (b + root) : (-b + root) / (2 * a);
     Real delta = Real(c + x);
-    return delta >= 0 ? std::min(delta, width_) : Real(0);  // also maps NaN to 0
+    if (!(delta >= 0 && delta <= width_)) {  // clamped (NaN to 0): the density where it lands
+      delta = delta >= 0 ? width_ : Real(0);
+      return {delta, pdf(delta)};
+    }
+    // gamma_k / ((delta - mu_k)^2 + gamma_k^2) for both lobes, over one division.
+    W q1 = Sqr(e1 + x) + g1 * g1, q2 = Sqr(e2 + x) + g2 * g2;
+    return {delta, Real((g1 * q2 + g2 * q1) / (q1 * q2 * W(mass_)))};
   }
 
   CauchyLobes<Real> fit_;

@@ -15,6 +15,7 @@ class UniformAngle {
   Real sample(Real u) const { return u * width_; }
   Real pdf(Real) const { return 1 / width_; }
   Real cdf(Real delta) const { return delta / width_; }
+  SegmentSample<Real> sample_pdf(Real u) const { return {sample(u), pdf(0)}; }
 
  private:
   Real width_;

@@ -3,24 +3,17 @@
 // of the phase product over kNodes nodes in the angle domain (section 4 of the maths note).
 //
 // If the point lobe's peak lies inside the interval the nodes are split there, and on each
-// side they follow a cosine-warped spacing, dense near both ends of the side. An interval
-// is chosen by its trapezoid area, then the linear density inside it is inverted.
+// side they follow a cosine-warped spacing, dense near both ends of the side; the density
+// is core/piecewise_linear.hpp's.
 #include <algorithm>
 #include <array>
 #include <string_view>
 
 #include "../angle/full_product.hpp"
 #include "../angle/segment_sampler.hpp"
+#include "../core/piecewise_linear.hpp"
 
 namespace vrlis {
-
-// The u in [0, 1] with density proportional to lerp(u, f0, f1) whose CDF is v (the stable
-// root of the quadratic).
-template <typename Real>
-Real SampleLinear(Real v, Real f0, Real f1) {
-  Real denom = f0 + std::sqrt(Sqr(f0) + v * (Sqr(f1) - Sqr(f0)));
-  return denom > 0 ? Clamp(v * (f0 + f1) / denom, Real(0), Real(1)) : v;
-}
 
 // A piecewise-linear fit of a target over the angle domain. Target is constructed from
 // (query, domain) and offers operator()(delta), point_lobe_flat(), point_peak() and
@@ -35,59 +28,48 @@ class PiecewiseLinearAngle {
   // that neither tiny intervals nor tiny integrands push the areas into subnormals.
   PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : width_(dom.width()) {
     Target target(q, dom);
+    std::array<Real, kNodes> node, value;
     Real peak = target.point_peak() / width_;
     if (!target.point_lobe_flat() && peak > 0 && peak < 1) {
       int split = static_cast<int>(std::lround(peak * (kNodes - 1)));
       split = Clamp(split, 1, kNodes - 2);
-      PlaceWarped(0, Real(0), peak, split);
-      PlaceWarped(split, peak, Real(1), kNodes - 1 - split);
+      PlaceWarped(node, 0, Real(0), peak, split);
+      PlaceWarped(node, split, peak, Real(1), kNodes - 1 - split);
     } else {
-      PlaceWarped(0, Real(0), Real(1), kNodes - 1);
+      PlaceWarped(node, 0, Real(0), Real(1), kNodes - 1);
     }
-    for (int j = 0; j < kNodes; ++j) value_[j] = target(node_[j] * width_);
-    Real largest = *std::max_element(value_.begin(), value_.end());
+    for (int j = 0; j < kNodes; ++j) value[j] = target(node[j] * width_);
+    Real largest = *std::max_element(value.begin(), value.end());
     if (largest > 0 && std::isfinite(largest))
-      for (Real& v : value_) v = std::max(v / largest, Target::kRelativeFloor);
-    Accumulate();
-    if (!(cdf_[kNodes - 1] > 0) || !std::isfinite(cdf_[kNodes - 1])) {  // a target zero at every node
-      value_.fill(1);
-      Accumulate();
+      for (Real& v : value) v = std::max(v / largest, Target::kRelativeFloor);
+    fit_ = PiecewiseLinear<Real, kNodes>(node, value);
+    if (!(fit_.integral() > 0) || !std::isfinite(fit_.integral())) {  // a target zero (or NaN) at every node
+      value.fill(1);
+      fit_ = PiecewiseLinear<Real, kNodes>(node, value);
     }
   }
 
-  Real sample(Real u) const {
-    Real target = u * cdf_[kNodes - 1];
-    int j = 0;
-    while (j < kNodes - 2 && !(cdf_[j + 1] > target)) ++j;
-    Real area = cdf_[j + 1] - cdf_[j];
-    Real v = area > 0 ? Clamp((target - cdf_[j]) / area, Real(0), Real(1)) : Real(0);
-    return (node_[j] + SampleLinear(v, value_[j], value_[j + 1]) * (node_[j + 1] - node_[j])) * width_;
-  }
-
-  Real pdf(Real delta) const {
-    Real x = delta / width_;
-    return Lerp(x, Interval(x)) / (cdf_[kNodes - 1] * width_);
-  }
-
-  Real cdf(Real delta) const {
-    Real x = delta / width_;
-    int j = Interval(x);
-    Real partial = (value_[j] + Lerp(x, j)) / 2 * (x - node_[j]);
-    return (cdf_[j] + partial) / cdf_[kNodes - 1];
+  Real sample(Real u) const { return fit_.sample(u) * width_; }
+  // Offsets are in [0, width] up to the rounding of offset_at, hence the clamp.
+  Real pdf(Real delta) const { return fit_.pdf(Clamp(delta / width_, Real(0), Real(1))) / width_; }
+  Real cdf(Real delta) const { return fit_.cdf(delta / width_); }
+  SegmentSample<Real> sample_pdf(Real u) const {
+    SegmentSample<Real> s = fit_.sample_pdf(u);
+    return {s.t * width_, s.pdf / width_};
   }
 
   // The node offsets (delta) of the fit.
   std::array<Real, kNodes> nodes() const {
     std::array<Real, kNodes> out;
-    for (int j = 0; j < kNodes; ++j) out[j] = node_[j] * width_;
+    for (int j = 0; j < kNodes; ++j) out[j] = fit_.node(j) * width_;
     return out;
   }
 
  private:
   // start + (end - start) (1 - cos(pi j / count)) / 2 for j = 0..count, written from index first.
-  void PlaceWarped(int first, Real start, Real end, int count) {
-    for (int j = 0; j <= count; ++j) node_[first + j] = start + (end - start) * WarpTable()[count][j];
-    node_[first + count] = end;  // exact, so the two sides of a split share the peak node
+  static void PlaceWarped(std::array<Real, kNodes>& node, int first, Real start, Real end, int count) {
+    for (int j = 0; j <= count; ++j) node[first + j] = start + (end - start) * WarpTable()[count][j];
+    node[first + count] = end;  // exact, so the two sides of a split share the peak node
   }
 
   // (1 - cos(pi j / count)) / 2 = sin^2(pi j / (2 count)): fixed per node count, so computed once.
@@ -102,29 +84,8 @@ class PiecewiseLinearAngle {
     return table;
   }
 
-  void Accumulate() {
-    cdf_[0] = 0;
-    for (int j = 0; j + 1 < kNodes; ++j) cdf_[j + 1] = cdf_[j] + (value_[j] + value_[j + 1]) / 2 * (node_[j + 1] - node_[j]);
-  }
-
-  // The interval [node_j, node_j+1] holding x (binary search).
-  int Interval(Real x) const {
-    int lo = 0, hi = kNodes - 2;
-    while (lo < hi) {
-      int mid = (lo + hi + 1) / 2;
-      if (node_[mid] <= x) lo = mid; else hi = mid - 1;
-    }
-    return lo;
-  }
-
-  Real Lerp(Real x, int j) const {
-    Real span = node_[j + 1] - node_[j];
-    Real s = span > 0 ? Clamp((x - node_[j]) / span, Real(0), Real(1)) : Real(0);
-    return value_[j] + s * (value_[j + 1] - value_[j]);
-  }
-
   Real width_;
-  std::array<Real, kNodes> node_, value_, cdf_;  // nodes in units of width_, values of the largest
+  PiecewiseLinear<Real, kNodes> fit_;  // over delta / width_, values in units of the largest
 };
 
 // Novák et al.: the phase product, 10 nodes as in the public implementation.

@@ -9,9 +9,9 @@
 // where theta is the camera step's angle variable seen from y(v), h(v) the distance from
 // y(v) to the camera line (exactly VrlPoint's inverse-distance factor) and F the phase
 // product times the transmittances T(u) T(|y - x(u)|) (FullProductTarget, up to the
-// factor exp(-sigma_t |y - x(0)|) by which it is normalised).
+// factor exp(-sigma_t |y - x(tmin)|) by which it is normalised).
 //
-// So M / p1 is bounded and smooth: r(v) = T(v) exp(-sigma_t |y(v) - x(0)|) Int F dtheta.
+// So M / p1 is bounded and smooth: r(v) = T(v) exp(-sigma_t |y(v) - x(tmin)|) Int F dtheta.
 // We warp by VrlPoint's CDF, xi = P1(v) (which absorbs the singular inverse distance), and
 // fit a piecewise-linear density PL(xi) through kNodes uniform nodes whose values are r at
 // those nodes, with Int F dtheta estimated by a kRule-point Gauss-Legendre rule over the
@@ -26,34 +26,26 @@
 // The fit costs kNodes x (VrlPoint sample + angle domain + 1 to 5 pieces x kRule target
 // evaluations): about 2 us in float, 20 times VrlPoint (docs/bench.md).
 //
-// Contract (same as VrlPoint): valid() is false for non-finite input, non-unit directions,
-// tmax < tmin, a negative camera length, |g| >= 1 or sigma_t < 0; then sample() and invert()
-// return NaN and pdf() returns 0. A VRL shorter than 1 / max<Real> samples tmin with pdf 0.
-// A zero-length camera segment (the integrand is 0) or a marginal estimate that underflows
-// at every node falls back to VrlPoint's density. Parallel and intersecting lines are
-// handled by VrlPoint and AngleDomain (finite, positive estimates).
+// The camera segment is the gather's [tmin, tmax], transmittance measured from x(tmin);
+// tmax may be +infinity: the angle domain maps it to a bounded interval and transmittance
+// makes the integrand vanish towards theta = pi/2, so the estimates stay finite.
+//
+// Contract (same as VrlPoint): error() is Validate(MediumGatherQuery); when it is not
+// QueryError::None, valid() is false, sample() and invert() return NaN and pdf() returns 0.
+// A VRL shorter than min<Real> / epsilon<Real> samples 0 with pdf 0. A zero-length camera
+// segment (the integrand is 0) or a marginal estimate that underflows at every node falls
+// back to VrlPoint's density. Parallel and intersecting lines are handled by VrlPoint and
+// AngleDomain (finite, positive estimates).
 #include <algorithm>
 #include <array>
 #include <limits>
 #include <string_view>
 
 #include "../angle/full_product.hpp"
-#include "novak.hpp"
+#include "../core/piecewise_linear.hpp"
 #include "vrl_point.hpp"
 
 namespace vrlis {
-
-template <typename Real>
-struct VrlMarginalQuery {
-  Vec3<Real> origin{}, dir{};  // the VRL y(v) = origin + v dir, dir unit length
-  Real tmin = 0, tmax = 0;     // both finite
-  Vec3<Real> camera_origin{}, camera_dir{};  // the camera segment x(u) = camera_origin + u camera_dir
-  Real camera_length = 0;                     // u in [0, camera_length], finite
-  Real g = 0;        // Henyey-Greenstein asymmetry of the medium (both scattering events)
-  Real sigma_t = 0;  // homogeneous extinction
-
-  VrlPointQuery<Real> vrl_point_query() const { return {origin, dir, tmin, tmax, camera_origin, camera_dir}; }
-};
 
 template <typename R = float, int kNodes = 8, int kRule = 2, bool kSplit = true, bool kClosest = false>
 class VrlMarginal {
@@ -65,52 +57,49 @@ class VrlMarginal {
   static constexpr int kNodeCount = kNodes;  // uniform nodes; plus the closest point (kClosest)
   static constexpr Real kRelativeFloor = Real(0.02);
 
-  explicit VrlMarginal(const VrlMarginalQuery<Real>& q) : vp_(q.vrl_point_query()) {
-    valid_ = vp_.valid() && std::isfinite(q.camera_length) && q.camera_length >= 0 && std::abs(q.g) < 1 &&
-             std::isfinite(q.sigma_t) && q.sigma_t >= 0;
-    value_.fill(1);
-    for (int j = 0; j < kMax; ++j) xi_[j] = Real(j) / Real(kMax - 1);
-    if (valid_) PlaceNodes(q);
-    if (valid_ && q.camera_length > 0) Fit(q);
-    Accumulate();
+  // Step one of a medium-to-medium gather; the camera segment may be unbounded (tmax = +inf).
+  explicit VrlMarginal(const MediumGatherQuery<Real>& q) : vp_(q) {
+    if (!valid()) return;
+    std::array<Real, kMax> xi, value;
+    int count = PlaceNodes(q, xi);
+    value.fill(1);
+    if (q.camera.tmax > q.camera.tmin) Fit(q, xi, count, value);
+    fit_ = PiecewiseLinear<Real, kMax>(xi, value, count);
   }
 
-  // Step one of a medium-to-medium gather (a finite camera segment).
-  explicit VrlMarginal(const MediumGatherQuery<Real>& q)
-      : VrlMarginal(VrlMarginalQuery<Real>{q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.at(q.camera.tmin),
-                                           q.camera.dir, q.camera.tmax - q.camera.tmin, q.medium.g, q.medium.sigma_t}) {}
-
-  bool valid() const { return valid_; }
+  // The gather query's validation (VrlPoint's, which validates the whole query).
+  bool valid() const { return vp_.valid(); }
+  QueryError error() const { return vp_.error(); }
   const VrlPoint<Real>& vrl_point() const { return vp_; }
 
-  Real sample(Real u) const {
-    if (!valid_) return kNaN;
-    return vp_.sample(SampleXi(u));
-  }
+  Real sample(Real u) const { return sample_pdf(u).t; }
 
   Real pdf(Real v) const {
-    if (!valid_) return 0;
+    if (!valid()) return 0;
     Real p1 = vp_.pdf(v);
     if (!(p1 > 0)) return 0;
-    return p1 * Lerp(vp_.invert(v)) / total_;
+    return p1 * fit_.pdf(vp_.invert(v));
   }
 
+  // The density is the product of the two warps' densities at the sampled xi and v.
   SegmentSample<Real> sample_pdf(Real u) const {
-    Real v = sample(u);
-    return {v, pdf(v)};
+    if (!valid()) return {kNaN, 0};
+    SegmentSample<Real> xi = fit_.sample_pdf(u);
+    SegmentSample<Real> v = vp_.sample_pdf(xi.t);
+    return {v.t, v.pdf * xi.pdf};
   }
 
   Real invert(Real v) const {
-    if (!valid_) return kNaN;
-    return Clamp(CdfXi(vp_.invert(v)), Real(0), Real(1));
+    if (!valid()) return kNaN;
+    return fit_.cdf(vp_.invert(v));
   }
 
   // The fitted density over xi = VrlPoint.invert(v) (for studies): value(xi) / total.
-  Real xi_density(Real xi) const { return Lerp(xi) / total_; }
+  Real xi_density(Real xi) const { return fit_.pdf(xi); }
   static constexpr Real node(int j) { return Real(j) / Real(kNodes - 1); }
   // The fit's nodes in xi (count() of them): the uniform ones and the closest point.
-  int count() const { return count_; }
-  Real fitted_node(int j) const { return xi_[j]; }
+  int count() const { return fit_.count(); }
+  Real fitted_node(int j) const { return fit_.node(j); }
 
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
@@ -118,37 +107,42 @@ class VrlMarginal {
 
   // Uniform nodes in xi, and the VRL point closest to the camera line where the marginal
   // over VrlPoint's density peaks when the lines nearly meet (|g| -> 1: both lobes).
-  void PlaceNodes(const VrlMarginalQuery<Real>& q) {
-    count_ = kNodes;
-    for (int j = 0; j < kNodes; ++j) xi_[j] = node(j);
+  // Returns the number of nodes.
+  int PlaceNodes(const MediumGatherQuery<Real>& q, std::array<Real, kMax>& xi) const {
+    for (int j = 0; j < kMax; ++j) xi[j] = j < kNodes ? node(j) : Real(1);
     if constexpr (kClosest) {
-      Vec3<Real> cr = Cross(q.dir, q.camera_dir), d = q.camera_origin - q.origin;
+      Vec3<Real> cr = Cross(q.vrl.dir, q.camera.dir), d = q.camera.origin - q.vrl.origin;
       Real sin2 = Dot(cr, cr);
-      if (!(sin2 > Real(1e-6))) return;
-      Real v0 = (Dot(d, q.dir) - Dot(d, q.camera_dir) * Dot(q.dir, q.camera_dir)) / sin2;
-      if (!(v0 > q.tmin && v0 < q.tmax)) return;
+      if (!(sin2 > Real(1e-6))) return kNodes;
+      Real v0 = (Dot(d, q.vrl.dir) - Dot(d, q.camera.dir) * Dot(q.vrl.dir, q.camera.dir)) / sin2;
+      if (!(v0 > 0 && v0 < q.vrl.length)) return kNodes;
       Real x0 = vp_.invert(v0);
       int j = std::min(static_cast<int>(x0 * Real(kNodes - 1)), kNodes - 2);
       Real gap = Real(0.05) / Real(kNodes - 1);
-      if (!(x0 - xi_[j] > gap && xi_[j + 1] - x0 > gap)) return;
-      for (int k = kNodes; k > j + 1; --k) xi_[k] = xi_[k - 1];
-      xi_[j + 1] = x0;
-      count_ = kNodes + 1;
+      if (!(x0 - xi[j] > gap && xi[j + 1] - x0 > gap)) return kNodes;
+      for (int k = kNodes; k > j + 1; --k) xi[k] = xi[k - 1];
+      xi[j + 1] = x0;
+      return kNodes + 1;
     }
+    return kNodes;
   }
 
-  void Fit(const VrlMarginalQuery<Real>& q) {
+  // The node values: the marginal estimate over VrlPoint's density at each node.
+  void Fit(const MediumGatherQuery<Real>& q, const std::array<Real, kMax>& xi, int count,
+           std::array<Real, kMax>& value) const {
     // Gauss-Legendre on [0, 1].
     constexpr Real x2 = Real(0.21132486540518711775), x3 = Real(0.11270166537925831148);
     const Real xs[3] = {kRule == 1 ? Real(0.5) : kRule == 2 ? x2 : x3, kRule == 2 ? 1 - x2 : Real(0.5), 1 - x3};
     const Real ws[3] = {kRule == 1 ? Real(1) : kRule == 2 ? Real(0.5) : Real(5) / 18,
                         kRule == 2 ? Real(0.5) : Real(8) / 18, Real(5) / 18};
-    SegmentQuery<Real> sq = MediumToMediumQuery(q.camera_origin, q.camera_dir, Real(0), q.camera_length, q.origin,
-                                                q.dir, q.g, q.sigma_t);
+    const Real g = q.medium.g, sigma_t = q.medium.sigma_t;
+    SegmentQuery<Real> sq = MediumToMediumQuery(q.camera.origin, q.camera.dir, q.camera.tmin, q.camera.tmax,
+                                                q.vrl.origin, q.vrl.dir, g, sigma_t);
+    const Vec3<Real> camera_start = q.camera.at(q.camera.tmin);
     std::array<Real, kMax> depth;
-    for (int j = 0; j < count_; ++j) {
-      Real v = vp_.sample(xi_[j]);
-      sq.point = q.origin + v * q.dir;
+    for (int j = 0; j < count; ++j) {
+      Real v = vp_.sample(xi[j]);
+      sq.point = q.vrl.at(v);
       AngleDomain<Real> dom(sq);
       FullProductTarget<Real> target(sq, dom);
       Real width = dom.width(), peak = target.point_peak();
@@ -158,7 +152,7 @@ class VrlMarginal {
         return (b - a) * sum;
       };
       if constexpr (!kSplit) {
-        value_[j] = rule(Real(0), width);
+        value[j] = rule(Real(0), width);
       } else {
         // Pieces that isolate the lobes' peaks, so the rule sees them: the point lobe's peak
         // (if inside) with a few lobe widths (1 - |g|) on either side, and the segment lobe's
@@ -166,78 +160,38 @@ class VrlMarginal {
         std::array<Real, 6> cut;
         int n = 0;
         cut[n++] = 0;
-        Real lobe = 3 * (1 - std::abs(q.g));
+        Real lobe = 3 * (1 - std::abs(g));
         if (!target.point_lobe_flat() && peak > 0 && peak < width) {
           if (peak - lobe > 0) cut[n++] = peak - lobe;
           cut[n++] = peak;
           if (peak + lobe < width) cut[n++] = peak + lobe;
         }
-        if (q.g != 0) {
-          Real pole = kPi<Real> / 2 + (q.g > 0 ? dom.theta_a() : -dom.theta_b());  // beyond its end
+        if (g != 0) {
+          Real pole = kPi<Real> / 2 + (g > 0 ? dom.theta_a() : -dom.theta_b());  // beyond its end
           Real reach = lobe + pole;
-          if (reach < width / 2) cut[n++] = q.g > 0 ? reach : width - reach;
+          if (reach < width / 2) cut[n++] = g > 0 ? reach : width - reach;
         }
         cut[n++] = width;
         std::sort(cut.begin(), cut.begin() + n);
         Real sum = 0;
         for (int k = 0; k + 1 < n; ++k) sum += rule(cut[k], cut[k + 1]);
-        value_[j] = sum;
+        value[j] = sum;
       }
-      depth[j] = q.sigma_t * ((v - q.tmin) + Length(sq.point - q.camera_origin));
+      depth[j] = sigma_t * (v + Length(sq.point - camera_start));
     }
     // Transmittance relative to the nearest node, so it underflows only where it is negligible.
-    Real least = *std::min_element(depth.begin(), depth.begin() + count_);
-    for (int j = 0; j < count_; ++j) value_[j] *= std::exp(least - depth[j]);
-    Real largest = *std::max_element(value_.begin(), value_.begin() + count_);
+    Real least = *std::min_element(depth.begin(), depth.begin() + count);
+    for (int j = 0; j < count; ++j) value[j] *= std::exp(least - depth[j]);
+    Real largest = *std::max_element(value.begin(), value.begin() + count);
     if (!(largest > 0) || !std::isfinite(largest)) {
-      value_.fill(1);
+      value.fill(1);
       return;
     }
-    for (Real& x : value_) x = std::max(x, kRelativeFloor * largest);
-  }
-
-  void Accumulate() {
-    cdf_[0] = 0;
-    for (int j = 0; j + 1 < count_; ++j) cdf_[j + 1] = cdf_[j] + (value_[j] + value_[j + 1]) / 2 * (xi_[j + 1] - xi_[j]);
-    total_ = cdf_[count_ - 1];
-  }
-
-  int Interval(Real xi) const {
-    int j = 0;
-    while (j < count_ - 2 && xi_[j + 1] <= xi) ++j;
-    return j;
-  }
-
-  // Position inside interval j, in [0, 1].
-  Real Within(Real xi, int j) const { return Clamp((xi - xi_[j]) / (xi_[j + 1] - xi_[j]), Real(0), Real(1)); }
-
-  Real Lerp(Real xi) const {
-    int j = Interval(xi);
-    Real s = Within(xi, j);
-    return value_[j] + s * (value_[j + 1] - value_[j]);
-  }
-
-  Real CdfXi(Real xi) const {
-    int j = Interval(xi);
-    Real s = Within(xi, j);
-    return (cdf_[j] + (value_[j] + (value_[j] + s * (value_[j + 1] - value_[j]))) / 2 * s * (xi_[j + 1] - xi_[j])) /
-           total_;
-  }
-
-  Real SampleXi(Real u) const {
-    Real target = u * total_;
-    int j = 0;
-    while (j < count_ - 2 && !(cdf_[j + 1] > target)) ++j;
-    Real area = cdf_[j + 1] - cdf_[j];
-    Real w = area > 0 ? Clamp((target - cdf_[j]) / area, Real(0), Real(1)) : Real(0);
-    return Clamp(xi_[j] + SampleLinear(w, value_[j], value_[j + 1]) * (xi_[j + 1] - xi_[j]), Real(0), Real(1));
+    for (Real& x : value) x = std::max(x, kRelativeFloor * largest);
   }
 
   VrlPoint<Real> vp_;
-  bool valid_ = false;
-  int count_ = kNodes;
-  std::array<Real, kMax> xi_, value_, cdf_;
-  Real total_ = 1;
+  PiecewiseLinear<Real, kMax> fit_;  // over xi
 };
 
 // Its entry in the run-time sampler tables (method.hpp).

@@ -4,10 +4,9 @@
 //   p(v) proportional to 1 / sqrt(1 + x(v)^2),  x(v) = k (v - v0),  k = sin(a) / h.
 // The CDF is asinh(x(v)) - asinh(x(tmin)), computed without cancellation.
 //
-// Contract: valid() is false for non-finite input (tmax too: the density's tail makes an
-// unbounded VRL unnormalisable), non-unit directions, tmax < tmin and coordinates beyond
-// MaxCoordinate<Real>(); then sample() and
-// invert() return NaN and pdf() returns 0. Parallel lines give the uniform density (the
+// Contract: error() is Validate(query) (for a gather query, Validate of the whole gather);
+// when it is not QueryError::None, valid() is false, sample() and invert() return NaN and
+// pdf() returns 0. Parallel lines give the uniform density (the
 // limit k -> 0). Intersecting lines (h -> 0) have a non-integrable 1 / |v - v0| target;
 // h is floored at the rounding noise of the inputs, so the density is sharply peaked at
 // v0 but finite. A VRL shorter than min<Real> / epsilon<Real> (zero length included)
@@ -28,17 +27,39 @@ struct VrlPointQuery {
   Vec3<Real> line_origin{}, line_dir{};  // the camera line, line_dir unit length
 };
 
+// NonFinite (tmax included: the density's tail makes an unbounded VRL unnormalisable),
+// NotUnitDirection, ReversedSegment or OutOfRange, as Validate(SegmentQuery).
+template <typename Real>
+QueryError Validate(const VrlPointQuery<Real>& q) {
+  if (!detail::AllFinite(q.origin, q.dir, q.line_origin, q.line_dir, q.tmin, q.tmax)) return QueryError::NonFinite;
+  if (!detail::IsUnit(q.dir) || !detail::IsUnit(q.line_dir)) return QueryError::NotUnitDirection;
+  if (!(q.tmax >= q.tmin)) return QueryError::ReversedSegment;
+  if (!detail::InRange(q.origin) || !detail::InRange(q.line_origin) || std::abs(q.tmin) > MaxCoordinate<Real>() ||
+      std::abs(q.tmax) > MaxCoordinate<Real>())
+    return QueryError::OutOfRange;
+  return QueryError::None;
+}
+
 template <typename R = float>
 class VrlPoint {
  public:
   using Real = R;
-  explicit VrlPoint(const VrlPointQuery<Real>& q) : tmin_(q.tmin), tmax_(q.tmax) {
-    valid_ = IsFinite(q.origin) && IsFinite(q.dir) && IsFinite(q.line_origin) && IsFinite(q.line_dir) &&
-             std::isfinite(q.tmin) && std::isfinite(q.tmax) && q.tmax >= q.tmin &&
-             std::abs(Dot(q.dir, q.dir) - 1) <= Real(2e-3) && std::abs(Dot(q.line_dir, q.line_dir) - 1) <= Real(2e-3) &&
-             detail::InRange(q.origin) && detail::InRange(q.line_origin) && std::abs(q.tmin) <= MaxCoordinate<Real>() &&
-             std::abs(q.tmax) <= MaxCoordinate<Real>();
-    if (!valid_ || !Representable()) return;
+  explicit VrlPoint(const VrlPointQuery<Real>& q) : VrlPoint(q, QueryError::None) {}
+
+  // Step one of a medium-to-medium gather: the VRL against the camera segment's line. The
+  // whole gather query is validated (Validate(MediumGatherQuery)), as every step is.
+  explicit VrlPoint(const MediumGatherQuery<Real>& q)
+      : VrlPoint(VrlPointQuery<Real>{q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.origin, q.camera.dir},
+                 Validate(q)) {}
+
+  bool valid() const { return error_ == QueryError::None; }
+  QueryError error() const { return error_; }
+
+ private:
+  // `first`: an error found before this query was built (None if none).
+  VrlPoint(const VrlPointQuery<Real>& q, QueryError first)
+      : tmin_(q.tmin), tmax_(q.tmax), error_(first != QueryError::None ? first : Validate(q)) {
+    if (!valid() || !Representable()) return;
     Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
     Real sin_a = Length(cross);
     Real along = Dot(d, q.dir);
@@ -58,41 +79,45 @@ class VrlPoint {
     if (!(total_ > 0) || !std::isfinite(total_)) k_ = 0;  // uniform to the last digit
   }
 
-  // Step one of a medium-to-medium gather: the VRL against the camera segment's line.
-  explicit VrlPoint(const MediumGatherQuery<Real>& q)
-      : VrlPoint(VrlPointQuery<Real>{q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.origin, q.camera.dir}) {}
-
-  bool valid() const { return valid_; }
-
-  Real sample(Real u) const {
-    if (!valid_) return kNaN;
-    Real length = tmax_ - tmin_;
-    if (!Representable()) return tmin_;
-    if (k_ == 0) return std::min(tmin_ + u * length, tmax_);
-    Real d = u * total_, xb = xa_ + k_ * length, v;
-    if (xa_ >= 0)  // moving away from v0 from the near end: no cancellation
-      v = tmin_ + Outward(xa_, d) / k_;
-    else if (xb <= 0)
-      v = tmax_ - Outward(-xb, total_ - d) / k_;
-    else  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
-      v = tmin_ + (std::sinh(std::asinh(xa_) + d) - xa_) / k_;
-    return Clamp(v, tmin_, tmax_);
-  }
+ public:
+  Real sample(Real u) const { return sample_pdf(u).t; }
 
   Real pdf(Real v) const {
-    if (!valid_ || !(v >= tmin_ && v <= tmax_) || !Representable()) return 0;
+    if (!valid() || !(v >= tmin_ && v <= tmax_) || !Representable()) return 0;
     if (k_ == 0) return 1 / (tmax_ - tmin_);
     Real x = xa_ + k_ * (v - tmin_);
     return k_ / (total_ * std::sqrt(1 + x * x));
   }
 
+  // The density from the sample's hyperbolic functions: sqrt(1 + x^2) = cosh(asinh(x)).
   SegmentSample<Real> sample_pdf(Real u) const {
-    Real v = sample(u);
-    return {v, pdf(v)};
+    if (!valid()) return {kNaN, 0};
+    Real length = tmax_ - tmin_;
+    if (!Representable()) return {tmin_, 0};
+    if (k_ == 0) return {std::min(tmin_ + u * length, tmax_), 1 / length};
+    Real d = u * total_, xb = xa_ + k_ * length, v, root;  // root = sqrt(1 + x(v)^2)
+    if (xa_ >= 0) {  // moving away from v0 from the near end: no cancellation
+      Outward step(xa_, d);
+      v = tmin_ + step.dx / k_;
+      root = step.root;
+    } else if (xb <= 0) {
+      Outward step(-xb, total_ - d);
+      v = tmax_ - step.dx / k_;
+      root = step.root;
+    } else {  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
+      Real y = std::asinh(xa_) + d;
+      v = tmin_ + (std::sinh(y) - xa_) / k_;
+      root = std::cosh(y);
+    }
+    if (!(v >= tmin_ && v <= tmax_)) {  // clamped: the density where it lands
+      v = Clamp(v, tmin_, tmax_);
+      return {v, pdf(v)};
+    }
+    return {v, k_ / (total_ * root)};
   }
 
   Real invert(Real v) const {
-    if (!valid_) return kNaN;
+    if (!valid()) return kNaN;
     if (!Representable()) return 0;
     v = Clamp(v, tmin_, tmax_);
     if (k_ == 0) return (v - tmin_) / (tmax_ - tmin_);
@@ -102,13 +127,19 @@ class VrlPoint {
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
   bool Representable() const { return RepresentableLength(tmax_ - tmin_); }
-  // sinh(asinh(x0) + d) - x0 for x0 >= 0, d >= 0, as a sum of positive terms.
-  static Real Outward(Real x0, Real d) {
-    return 2 * x0 * Sqr(std::sinh(d / 2)) + std::sqrt(1 + x0 * x0) * std::sinh(d);
-  }
+  // For x0 >= 0, d >= 0 and x1 = sinh(asinh(x0) + d): x1 - x0 and sqrt(1 + x1^2) = cosh(...),
+  // both as sums of positive terms.
+  struct Outward {
+    Real dx, root;
+    Outward(Real x0, Real d) {
+      Real half = 2 * Sqr(std::sinh(d / 2)), sh = std::sinh(d), r0 = std::sqrt(1 + x0 * x0);
+      dx = x0 * half + r0 * sh;
+      root = r0 * (1 + half) + x0 * sh;
+    }
+  };
 
   Real tmin_, tmax_;
-  bool valid_ = false;
+  QueryError error_;
   Real k_ = 0, xa_ = 0, total_ = 0;
 };
 
