@@ -58,5 +58,6 @@ void RegisterCamera();
 void RegisterFit();
 void RegisterEstimator();
 void RegisterVrlPoint();
+void RegisterGather();
 
 }  // namespace vrlis::bench

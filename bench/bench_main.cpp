@@ -6,6 +6,7 @@
 //                              (fit, sample, pdf), the camera sampler (fit, sample, pdf), the
 //                              integrand, f / (p1 p2)
 //   VrlPoint                   step one alone (fit, sample, pdf); independent of g
+//   Gather/<method>/g:<g>      the library's whole gather call, and GatherPart/*: its parts
 //
 // Every benchmark cycles in order through a pool of 1024 random queries (the pairs of the
 // accuracy study, seeded), so that no single warm branch is timed. Float throughout; each
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
   RegisterCamera();
   RegisterFit();
   RegisterEstimator();
+  RegisterGather();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -9,6 +9,7 @@
 
 #include "../core/math.hpp"
 #include "../core/query.hpp"
+#include "../core/lane_math.hpp"
 
 namespace vrlis {
 
@@ -55,8 +56,8 @@ class AngleDomain {
 
   // The inverse of offset_at: tan(theta_a + delta) written with the addition formula.
   Real t_at(Real delta) const {
-    Real s = std::sin(delta), c = std::cos(delta);
-    Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
+    SinCosPair<Real> sc = SinCos(delta);
+    Real s = sc.sin, denom = sc.cos - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
     Real step = denom > 0 ? s / denom : std::numeric_limits<Real>::infinity();
     if (!(step > 0)) return tmin_;  // h (1 + A^2) may overflow; never multiply it by 0
     Real t = tmin_ + (h_ + (tmin_ - u0_) * tan_a_) * step;

@@ -2,11 +2,16 @@
 // The sampling target in the angle domain: the product of the segment lobe and the point
 // lobe as functions of delta = theta - theta_a (section 3 of the maths note).
 //
-// Both lobes are evaluated from half-angle sines of offsets that are computed without
-// cancellation, so lobes with |g| -> 1 keep their shape next to an endpoint.
+// Both lobes are evaluated from half-angle sines, so lobes with |g| -> 1 keep their shape
+// next to an endpoint. The half angles of both lobes are delta/2 minus a constant, so one
+// SinCos(delta / 2) per evaluation gives both by the subtraction formulas (rotations fixed
+// per query); their absolute error is a few ulp, as that of the angle itself.
+#include <array>
+#include <cstddef>
 #include <limits>
 
 #include "../core/phase.hpp"
+#include "../core/lane_math.hpp"
 #include "angle_domain.hpp"
 
 namespace vrlis {
@@ -30,6 +35,7 @@ class PhaseProduct {
       lower_ = -Atan2(Real(1), -A);
       upper_ = lower_ + kPi<Real>;
     }
+    segment_rotation_ = SinCos(lower_ / 2);
     if (kind_ == LobeKind::None) return;
     Vec3<Real> n = dom.normal();
     Real a = -Dot(q.lobe.axis, n), b = Dot(q.lobe.axis, q.dir), c = Dot(q.lobe.axis, Cross(q.dir, n));
@@ -41,29 +47,61 @@ class PhaseProduct {
     one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
     // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.
     theta_e_ = Atan2(b - A * a, a + A * b);
+    point_rotation_ = SinCos(theta_e_ / 2);
+    segment_shape_ = Shape(g_, 1, 0, segment_rotation_);
+    point_shape_ = Shape(g_point_, r_, one_minus_r_, point_rotation_);
   }
 
-  Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
+  // The product at every offset in `delta` (a fit's nodes). For two Henyey-Greenstein lobes
+  // the loop is branch-free, so compilers vectorise it: each lobe is K d^(-3/2) with
+  // d = (1 - |g|)^2 + 2 |g| (1 - r) + 4 |g| r w^2, w the sine of its half angle from its peak
+  // (r = 1 for the segment lobe), a fixed combination of sin and cos of delta / 2.
+  template <std::size_t N>
+  void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
+    if (kind_ != LobeKind::HenyeyGreenstein) {
+      for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
+      return;
+    }
+    const LobeShape a = segment_shape_, b = point_shape_;
+    for (std::size_t j = 0; j < N; ++j) {
+      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
+      Real wa = half.sin * a.from_sin + half.cos * a.from_cos, wb = half.sin * b.from_sin + half.cos * b.from_cos;
+      Real da = a.base + a.slope * wa * wa, db = b.base + b.slope * wb * wb;
+      Real ra = RsqrtLanes(da), rb = RsqrtLanes(db);
+      out[j] = a.scale * (ra * ra * ra) * (b.scale * (rb * rb * rb));
+    }
+  }
+
+  Real operator()(Real delta) const {
+    SinCosPair<Real> half = half_angle(delta);
+    return segment_lobe(segment_half_angle(half)) * point_lobe(half);
+  }
+
+  // sin and cos of delta / 2: what both lobes are evaluated from.
+  static SinCosPair<Real> half_angle(Real delta) { return SinCos(delta / 2); }
 
   // HenyeyGreenstein(g, -sin theta) with scattering angle x = theta + pi/2 = delta - lower:
   // 1 - cos = 2 sin^2(x/2) and 1 + cos = 2 cos^2(x/2), both exact near their zero.
-  Real segment_lobe(Real delta) const {
-    Real half = segment_half_angle(delta);
-    return segment_lobe(std::sin(half), std::cos(half));
+  Real segment_lobe(Real delta) const { return segment_lobe(segment_half_angle(half_angle(delta))); }
+  // sin and cos of x/2 = delta/2 - lower/2, from those of delta / 2.
+  SinCosPair<Real> segment_half_angle(SinCosPair<Real> half) const {
+    const SinCosPair<Real>& l = segment_rotation_;
+    return {half.sin * l.cos - half.cos * l.sin, half.cos * l.cos + half.sin * l.sin};
   }
-  Real segment_half_angle(Real delta) const { return (delta - lower_) / 2; }
-  Real segment_lobe(Real sin_half, Real cos_half) const {
-    return HenyeyGreenstein(g_, 2 * Sqr(sin_half), 2 * Sqr(cos_half));
+  Real segment_lobe(SinCosPair<Real> segment_half) const {
+    return HenyeyGreenstein(g_, 2 * Sqr(segment_half.sin), 2 * Sqr(segment_half.cos));
   }
+  // cos(x_a / 2), x_a the scattering angle at delta = 0.
+  Real segment_half_cos_at_start() const { return segment_rotation_.cos; }
 
-  Real point_lobe(Real delta) const {
-    Real phi = delta - theta_e_;
+  Real point_lobe(Real delta) const { return point_lobe(half_angle(delta)); }
+  Real point_lobe(SinCosPair<Real> half) const {
+    // sin^2(phi / 2), phi = delta - theta_e: 1 -+ r cos(phi) stay exact near both peaks.
+    Real s2 = Sqr(half.sin * point_rotation_.cos - half.cos * point_rotation_.sin);
     switch (kind_) {
-      case LobeKind::HenyeyGreenstein: {
-        Real s2 = SinSqrHalf(phi);  // 1 -+ r cos(phi), exact near both peaks
+      case LobeKind::HenyeyGreenstein:
         return HenyeyGreenstein(g_point_, one_minus_r_ + 2 * r_ * s2, one_minus_r_ + 2 * r_ * (1 - s2));
-      }
-      case LobeKind::ClampedCosine: return std::max(r_ * std::cos(phi), Real(0)) * kInvPi<Real>;
+      case LobeKind::ClampedCosine: return std::max(r_ * (1 - 2 * s2), Real(0)) * kInvPi<Real>;
       case LobeKind::None: break;
     }
     return 1;
@@ -100,6 +138,28 @@ class PhaseProduct {
   }
 
  private:
+  // One Henyey-Greenstein lobe as evaluate() needs it (see there).
+  struct LobeShape {
+    Real from_sin = 0, from_cos = 0, base = 1, slope = 0, scale = kInvPi<Real> / 4;
+  };
+  // rotation: sin and cos of the lobe's half angle at delta = 0 (r = 1 for the segment
+  // lobe). The half angle from the peak is that one for g >= 0 and its complement for g < 0.
+  static LobeShape Shape(Real g, Real r, Real one_minus_r, SinCosPair<Real> rotation) {
+    Real ag = std::abs(g);
+    LobeShape s;
+    if (g >= 0) {
+      s.from_sin = rotation.cos;
+      s.from_cos = -rotation.sin;
+    } else {
+      s.from_sin = rotation.sin;
+      s.from_cos = rotation.cos;
+    }
+    s.base = Sqr(1 - ag) + 2 * ag * one_minus_r;
+    s.slope = 4 * ag * r;
+    s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
+    return s;
+  }
+
   Real DistanceToInterval(Real x) const { return x < 0 ? -x : std::max(x - width_, Real(0)); }
 
   Real g_, g_point_;
@@ -107,6 +167,8 @@ class PhaseProduct {
   Real width_;
   Real lower_, upper_;
   Real r_ = 0, one_minus_r_ = 1, theta_e_ = 0;
+  SinCosPair<Real> segment_rotation_{}, point_rotation_{Real(0), Real(1)};  // of lower / 2 and theta_e / 2
+  LobeShape segment_shape_, point_shape_;
 };
 
 }  // namespace vrlis

@@ -23,7 +23,7 @@ Real SampleLinear(Real v, Real f0, Real f1) {
 }
 
 // A piecewise-linear fit of a target over the angle domain. Target is constructed from
-// (query, domain) and offers operator()(delta), point_lobe_flat(), point_peak() and
+// (query, domain) and offers evaluate(deltas, values), point_lobe_flat(), point_peak() and
 // kRelativeFloor (node values are raised to that fraction of the largest one).
 template <typename R, int kNodes = 10, typename Target = PhaseProduct<R>>
 class PiecewiseLinearAngle {
@@ -44,7 +44,9 @@ class PiecewiseLinearAngle {
     } else {
       PlaceWarped(0, Real(0), Real(1), kNodes - 1);
     }
-    for (int j = 0; j < kNodes; ++j) value_[j] = target(node_[j] * width_);
+    std::array<Real, kNodes> at;
+    for (int j = 0; j < kNodes; ++j) at[j] = node_[j] * width_;
+    target.evaluate(at, value_);
     Real largest = *std::max_element(value_.begin(), value_.end());
     if (largest > 0 && std::isfinite(largest))
       for (Real& v : value_) v = std::max(v / largest, Target::kRelativeFloor);

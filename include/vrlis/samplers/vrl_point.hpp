@@ -70,12 +70,10 @@ class VrlPoint {
     if (!Representable()) return tmin_;
     if (k_ == 0) return std::min(tmin_ + u * length, tmax_);
     Real d = u * total_, xb = xa_ + k_ * length, v;
-    if (xa_ >= 0)  // moving away from v0 from the near end: no cancellation
-      v = tmin_ + Outward(xa_, d) / k_;
-    else if (xb <= 0)
-      v = tmax_ - Outward(-xb, total_ - d) / k_;
-    else  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
-      v = tmin_ + (std::sinh(std::asinh(xa_) + d) - xa_) / k_;
+    if (xb <= 0)  // v0 at or beyond tmax: step back from tmax, where the density peaks
+      v = tmax_ - Advance(-xb, total_ - d) / k_;
+    else
+      v = tmin_ + Advance(xa_, d) / k_;
     return Clamp(v, tmin_, tmax_);
   }
 
@@ -102,9 +100,15 @@ class VrlPoint {
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
   bool Representable() const { return RepresentableLength(tmax_ - tmin_); }
-  // sinh(asinh(x0) + d) - x0 for x0 >= 0, d >= 0, as a sum of positive terms.
-  static Real Outward(Real x0, Real d) {
-    return 2 * x0 * Sqr(std::sinh(d / 2)) + std::sqrt(1 + x0 * x0) * std::sinh(d);
+  // sinh(asinh(x0) + d) - x0 for d >= 0, as a sum of positive terms and one expm1 (sinh,
+  // asinh and a second sinh cost three libm calls): with E = expm1(d), cosh d - 1 =
+  // E^2 / (2 (E + 1)) and sinh d = E (E + 2) / (2 (E + 1)), so the difference
+  // x0 (cosh d - 1) + sqrt(1 + x0^2) sinh d = E / (E + 1) ((x0 + s0) E + 2 s0) / 2, where
+  // x0 + s0 = 1 / (s0 - x0) for x0 < 0 keeps its digits.
+  static Real Advance(Real x0, Real d) {
+    Real e = std::expm1(d), s0 = std::sqrt(1 + x0 * x0);
+    Real x0_plus_s0 = x0 >= 0 ? x0 + s0 : 1 / (s0 - x0);
+    return e / (e + 1) * (x0_plus_s0 * e + 2 * s0) / 2;
   }
 
   Real tmin_, tmax_;
