@@ -58,6 +58,18 @@ for rep in $(seq "$reps"); do
   echo "   round $rep done"
 done
 
+echo "== vrlis_bench Gather/*, GatherPart/*, Fit/*: this tree only"
+"$new/bench/vrlis_bench" --benchmark_filter='^Gather|^Fit/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
+  --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+  --benchmark_out="$out/runs/parts.json" --benchmark_out_format=json >/dev/null
+if command -v perf >/dev/null; then
+  echo "== perf profile of vrl_render (bidirectional, novak, 1 thread)"
+  perf record -q -o "$out/runs/perf.data" "$new/examples/vrl_render" --scene bidirectional --sampler novak --threads 1 \
+    --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf" >/dev/null 2>&1 || true
+  perf report -q -i "$out/runs/perf.data" --no-children --sort symbol --stdio 2>/dev/null | grep -E '^ +[0-9]' |
+    head -15 >"$out/runs/perf.txt" || true
+fi
+
 echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
 for rep in $(seq "$reps"); do
   for build in base new; do
@@ -98,8 +110,38 @@ for g in gs:
     row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
     ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
+parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/parts.json"))["benchmarks"]
+         if b.get("aggregate_name") == "median"}
+print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray)\n")
+print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest |")
+print("|---|---|---|---|---|---|---|---|---|")
+for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
+    for g in (-0.9, 0.5, 0.9):
+        whole, fit, cam = parts[f"Gather/{m}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], t("new", c, g)
+        v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
+        print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} |")
+try:
+    prof = open(f"{out}/runs/perf.txt").read().rstrip()
+    print("\nProfile of `vrl_render --scene bidirectional --sampler novak --threads 1` (perf, self time, top symbols):\n")
+    print("```\n" + prof + "\n```")
+except OSError:
+    pass
 print("\nGeometric mean over g: " + ", ".join(f"{c} new / base {geo([t('new', c, g) / t('base', c, g) for g in gs]):.2f}" for c in cams))
 for c in ("CauchySum", "CauchyMixture"):
     print(f"{c} / Novak: base {geo([t('base', c, g) / t('base', 'Novak', g) for g in gs]):.2f}, "
           f"new {geo([t('new', c, g) / t('new', 'Novak', g) for g in gs]):.2f}")
 EOF
+
+# The generated section of docs/bench.md (tools/bench.sh keeps it when it rewrites the rest).
+if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
+  model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
+  { sed '/^<!-- speed -->$/,$d' docs/bench.md
+    echo '<!-- speed -->'
+    echo '## Speed against the baseline and the cost of one gather'
+    echo
+    echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`tools/speed.sh\`"
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds)."
+    echo
+    cat "$out/speed.md"; } >"$out/bench.md.new"
+  mv "$out/bench.md.new" docs/bench.md
+fi

@@ -22,12 +22,13 @@ class FullProductTarget {
   static constexpr Real kRelativeFloor = Real(1e-3);
 
   FullProductTarget(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
-      : phase_(q, dom), depth_scale_(q.sigma_t * dom.h() / phase_.segment_half_cos_at_start()) {}
+      : phase_(q, dom),
+        depth_scale_(q.sigma_t * dom.h() / std::cos(phase_.segment_half_angle(0))) {}
 
   Real operator()(Real delta) const {
-    SinCosPair<Real> half = PhaseProduct<Real>::half_angle(delta), segment_half = phase_.segment_half_angle(half);
-    Real value = phase_.segment_lobe(segment_half) * phase_.point_lobe(half);
-    if (depth_scale_ > 0) value *= std::exp(-depth_scale_ * half.sin / std::max(segment_half.cos, Real(0)));
+    Real half = phase_.segment_half_angle(delta), sin_half = std::sin(half), cos_half = std::cos(half);
+    Real value = phase_.segment_lobe(sin_half, cos_half) * phase_.point_lobe(delta);
+    if (depth_scale_ > 0) value *= std::exp(-depth_scale_ * std::sin(delta / 2) / std::max(cos_half, Real(0)));
     return value;
   }
   template <std::size_t N>

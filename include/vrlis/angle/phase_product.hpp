@@ -3,9 +3,9 @@
 // lobe as functions of delta = theta - theta_a (section 3 of the maths note).
 //
 // Both lobes are evaluated from half-angle sines, so lobes with |g| -> 1 keep their shape
-// next to an endpoint. The half angles of both lobes are delta/2 minus a constant, so one
-// SinCos(delta / 2) per evaluation gives both by the subtraction formulas (rotations fixed
-// per query); their absolute error is a few ulp, as that of the angle itself.
+// next to an endpoint. In evaluate() (a fit's nodes), the half angles of both lobes are
+// delta/2 minus a constant, so one SinCos(delta / 2) per node gives both by the subtraction
+// formulas; their absolute error is a few ulp, as that of the angle itself.
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -35,7 +35,6 @@ class PhaseProduct {
       lower_ = -Atan2(Real(1), -A);
       upper_ = lower_ + kPi<Real>;
     }
-    segment_rotation_ = SinCos(lower_ / 2);
     if (kind_ == LobeKind::None) return;
     Vec3<Real> n = dom.normal();
     Real a = -Dot(q.lobe.axis, n), b = Dot(q.lobe.axis, q.dir), c = Dot(q.lobe.axis, Cross(q.dir, n));
@@ -47,9 +46,6 @@ class PhaseProduct {
     one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
     // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.
     theta_e_ = Atan2(b - A * a, a + A * b);
-    point_rotation_ = SinCos(theta_e_ / 2);
-    segment_shape_ = Shape(g_, 1, 0, segment_rotation_);
-    point_shape_ = Shape(g_point_, r_, one_minus_r_, point_rotation_);
   }
 
   // The product at every offset in `delta` (a fit's nodes). For two Henyey-Greenstein lobes
@@ -62,7 +58,8 @@ class PhaseProduct {
       for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
       return;
     }
-    const LobeShape a = segment_shape_, b = point_shape_;
+    // (Computed here, not in the constructor: the Cauchy fits never need them.)
+    const LobeShape a = Shape(g_, 1, 0, SinCos(lower_ / 2)), b = Shape(g_point_, r_, one_minus_r_, SinCos(theta_e_ / 2));
     for (std::size_t j = 0; j < N; ++j) {
       SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
       Real wa = half.sin * a.from_sin + half.cos * a.from_cos, wb = half.sin * b.from_sin + half.cos * b.from_cos;
@@ -72,36 +69,25 @@ class PhaseProduct {
     }
   }
 
-  Real operator()(Real delta) const {
-    SinCosPair<Real> half = half_angle(delta);
-    return segment_lobe(segment_half_angle(half)) * point_lobe(half);
-  }
-
-  // sin and cos of delta / 2: what both lobes are evaluated from.
-  static SinCosPair<Real> half_angle(Real delta) { return SinCos(delta / 2); }
+  Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
 
   // HenyeyGreenstein(g, -sin theta) with scattering angle x = theta + pi/2 = delta - lower:
   // 1 - cos = 2 sin^2(x/2) and 1 + cos = 2 cos^2(x/2), both exact near their zero.
-  Real segment_lobe(Real delta) const { return segment_lobe(segment_half_angle(half_angle(delta))); }
-  // sin and cos of x/2 = delta/2 - lower/2, from those of delta / 2.
-  SinCosPair<Real> segment_half_angle(SinCosPair<Real> half) const {
-    const SinCosPair<Real>& l = segment_rotation_;
-    return {half.sin * l.cos - half.cos * l.sin, half.cos * l.cos + half.sin * l.sin};
+  Real segment_lobe(Real delta) const {
+    Real half = segment_half_angle(delta);
+    return segment_lobe(std::sin(half), std::cos(half));
   }
-  Real segment_lobe(SinCosPair<Real> segment_half) const {
-    return HenyeyGreenstein(g_, 2 * Sqr(segment_half.sin), 2 * Sqr(segment_half.cos));
+  Real segment_half_angle(Real delta) const { return (delta - lower_) / 2; }
+  Real segment_lobe(Real sin_half, Real cos_half) const {
+    return HenyeyGreenstein(g_, 2 * Sqr(sin_half), 2 * Sqr(cos_half));
   }
-  // cos(x_a / 2), x_a the scattering angle at delta = 0.
-  Real segment_half_cos_at_start() const { return segment_rotation_.cos; }
 
-  Real point_lobe(Real delta) const { return point_lobe(half_angle(delta)); }
-  Real point_lobe(SinCosPair<Real> half) const {
-    // sin^2(phi / 2), phi = delta - theta_e: 1 -+ r cos(phi) stay exact near both peaks.
-    Real s2 = Sqr(half.sin * point_rotation_.cos - half.cos * point_rotation_.sin);
+  Real point_lobe(Real delta) const {
+    Real phi = delta - theta_e_, s2 = Sqr(std::sin(phi / 2));  // 1 -+ r cos(phi), exact near both peaks
     switch (kind_) {
       case LobeKind::HenyeyGreenstein:
         return HenyeyGreenstein(g_point_, one_minus_r_ + 2 * r_ * s2, one_minus_r_ + 2 * r_ * (1 - s2));
-      case LobeKind::ClampedCosine: return std::max(r_ * (1 - 2 * s2), Real(0)) * kInvPi<Real>;
+      case LobeKind::ClampedCosine: return std::max(r_ * std::cos(phi), Real(0)) * kInvPi<Real>;
       case LobeKind::None: break;
     }
     return 1;
@@ -167,8 +153,6 @@ class PhaseProduct {
   Real width_;
   Real lower_, upper_;
   Real r_ = 0, one_minus_r_ = 1, theta_e_ = 0;
-  SinCosPair<Real> segment_rotation_{}, point_rotation_{Real(0), Real(1)};  // of lower / 2 and theta_e / 2
-  LobeShape segment_shape_, point_shape_;
 };
 
 }  // namespace vrlis
