@@ -57,5 +57,6 @@ void RegisterCamera();
 void RegisterFit();
 void RegisterEstimator();
 void RegisterVrlPoint();
+void RegisterGather();
 
 }  // namespace vrlis::bench

@@ -8,6 +8,7 @@
 //   EstimatorMarginal/...      the same with VrlMarginal as step one
 //   VrlPoint                   step one alone (fit, sample, pdf); independent of g
 //   VrlMarginal/step/g:<g>     VrlMarginal alone
+//   Gather/<method>/g:<g>      the library's whole gather call, and GatherPart/*: its parts
 //
 // Every benchmark cycles in order through a pool of 1024 random configurations (those of
 // the accuracy study, seeded), so that no single warm branch is timed. Float throughout;
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   RegisterCamera();
   RegisterFit();
   RegisterEstimator();
+  RegisterGather();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

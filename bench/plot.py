@@ -225,7 +225,7 @@ def main():
         L.append("")
     L.append("At g = 0 Novák and both Cauchy samplers draw the equiangular distribution (their relative variances are "
              "equal), so among them only cost differs there; FullProduct also follows transmittance. "
-             "FullProduct is vrlis's own sampler (Novák's construction over phases x transmittance, 16 nodes), "
+             "FullProduct is vrlis's own sampler (Novák's construction over phases x transmittance, 8 nodes), "
              "not one of the published ones. "
              "VrlMarginal (+M) is vrlis's own step one: VrlPoint's inverse-distance density times a piecewise-linear "
              "correction over VrlPoint's CDF, fitted at 8 nodes to an estimate of the marginal Int f du (transmittance "

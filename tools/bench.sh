@@ -43,6 +43,8 @@ command="tools/bench.sh${1:+ $1}"
 if [ "${VRLIS_BENCH_NO_DOCS:-0}" != 1 ]; then
   mkdir -p docs/figures
   cp "$out"/speed_accuracy.png "$out"/speed_accuracy.svg "$out"/efficiency.png "$out"/efficiency.svg docs/figures/
-  cp "$out/table.md" docs/bench.md
+  # keep the section tools/speed.sh generates
+  { cat "$out/table.md"; [ ! -f docs/bench.md ] || sed -n '/^<!-- speed -->$/,$p' docs/bench.md; } >"$out/bench.md.new"
+  mv "$out/bench.md.new" docs/bench.md
 fi
 echo "== wrote $out/table.md and the charts$([ "${VRLIS_BENCH_NO_DOCS:-0}" != 1 ] && echo '; updated docs/bench.md and docs/figures/')"

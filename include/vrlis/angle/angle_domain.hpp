@@ -9,6 +9,7 @@
 
 #include "../core/math.hpp"
 #include "../core/query.hpp"
+#include "../core/lane_math.hpp"
 
 namespace vrlis {
 
@@ -69,7 +70,8 @@ class AngleDomain {
   // dtheta/dt = cos^2(theta) / h = (denom cos(theta_a))^2 / h. This equals dtheta_dt(t) of
   // the rounded t to a few ulps (tan of the computed t's angle is (A c + s) / denom).
   AnglePoint<Real> point_at(Real delta) const {
-    Real s = std::sin(delta), c = std::cos(delta);
+    SinCosPair<Real> sc = SinCos(delta);
+    Real s = sc.sin, c = sc.cos;
     Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
     Real step = denom > 0 ? s / denom : std::numeric_limits<Real>::infinity();
     if (!(step > 0)) return {tmin_, dtheta_dt(tmin_)};  // h (1 + A^2) may overflow; never multiply it by 0

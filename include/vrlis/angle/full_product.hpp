@@ -10,6 +10,8 @@
 // so the optical depth from tmin is sigma_t h (tan(x/2) - tan(x_a/2))
 //   = sigma_t h sin(delta/2) / (cos(x/2) cos(x_a/2)),
 // which reuses the cosine the segment lobe needs anyway and never cancels.
+#include <array>
+
 #include "phase_product.hpp"
 
 namespace vrlis {
@@ -23,7 +25,9 @@ class FullProductTarget {
 
   FullProductTarget(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
       : phase_(q, dom),
-        depth_scale_(q.sigma_t * dom.h() / std::cos(phase_.segment_half_angle(0))) {}
+        depth_scale_(q.sigma_t * dom.h() / std::cos(phase_.segment_half_angle(0))),
+        sigma_h_(q.sigma_t * dom.h()),
+        width_(dom.width()) {}
 
   Real operator()(Real delta) const {
     Real half = phase_.segment_half_angle(delta), sin_half = std::sin(half), cos_half = std::cos(half);
@@ -31,13 +35,57 @@ class FullProductTarget {
     if (depth_scale_ > 0) value *= std::exp(-depth_scale_ * std::sin(delta / 2) / std::max(cos_half, Real(0)));
     return value;
   }
+  template <std::size_t N>
+  void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
+    for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
+  }
 
   bool point_lobe_flat() const { return phase_.point_lobe_flat(); }
   Real point_peak() const { return phase_.point_peak(); }
 
+  // The fit's split points: the point lobe's peak (as Novák's), and where the segment lobe x
+  // transmittance peaks inside the interval. For g < 0 the segment lobe grows towards the
+  // far pole while the transmittance falls, so their product peaks inside; a fit that
+  // misses that peak puts a tiny density under most of the integral (docs/maths.md#full-product).
+  int splits(std::array<Real, 2>& out) const {
+    int n = phase_.splits(out);
+    Real peak = SegmentTransmittancePeak();
+    if (peak > 0 && peak < width_) {
+      if (n == 1 && std::abs(peak - out[0]) <= width_ * Real(1e-3)) return n;  // one node serves both
+      out[n++] = peak;
+      if (n == 2 && out[1] < out[0]) std::swap(out[0], out[1]);
+    }
+    return n;
+  }
+
+  // With y = x/2 the segment lobe's half scattering angle and c = cos y, the log-derivative
+  // of lobe x transmittance in x vanishes where 12 |g| sin(y) c^3 = sigma_t h D(c), D the
+  // lobe's denominator (1 + g)^2 + 4 |g| c^2 (g < 0). Along x the product rises where the
+  // left side is larger; its maximum is the smaller positive root in c. Newton from the
+  // root of the leading terms, 12 |g| c^3 = sigma_t h (1 + g)^2, which lies below it.
+  // Returns the peak's offset, or -1 when the product has no interior peak.
+  Real SegmentTransmittancePeak() const {
+    Real g = phase_.segment_g();
+    if (!(g < 0) || !(sigma_h_ > 0)) return -1;
+    Real a = -g, k = 12 * a, base = Sqr(1 + g);
+    Real c = std::cbrt(sigma_h_ * base / k);
+    for (int i = 0; i < 8 && c < 1; ++i) {
+      Real s = std::sqrt(1 - c * c);
+      Real f = k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c);
+      Real df = k * (3 * s * c * c - c * c * c * c / s) - 8 * a * sigma_h_ * c;
+      if (!(df > 0)) return -1;  // past the maximum of the left side: no crossing from below
+      c -= f / df;
+    }
+    if (!(c > 0 && c < 1)) return -1;
+    Real s = std::sqrt(1 - c * c);
+    if (std::abs(k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c)) > Real(1e-3) * sigma_h_ * base) return -1;
+    return 2 * Atan2(s, c) + phase_.lower_pole();
+  }
+
  private:
   PhaseProduct<Real> phase_;
   Real depth_scale_;  // sigma_t h / cos(x_a / 2)
+  Real sigma_h_, width_;
 };
 
 }  // namespace vrlis

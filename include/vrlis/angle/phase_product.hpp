@@ -2,11 +2,16 @@
 // The sampling target in the angle domain: the product of the segment lobe and the point
 // lobe as functions of delta = theta - theta_a (section 3 of the maths note).
 //
-// Both lobes are evaluated from half-angle sines of offsets that are computed without
-// cancellation, so lobes with |g| -> 1 keep their shape next to an endpoint.
+// Both lobes are evaluated from half-angle sines, so lobes with |g| -> 1 keep their shape
+// next to an endpoint. In evaluate() (a fit's nodes), the half angles of both lobes are
+// delta/2 minus a constant, so one SinCos(delta / 2) per node gives both by the subtraction
+// formulas; their absolute error is a few ulp, as that of the angle itself.
+#include <array>
+#include <cstddef>
 #include <limits>
 
 #include "../core/phase.hpp"
+#include "../core/lane_math.hpp"
 #include "angle_domain.hpp"
 
 namespace vrlis {
@@ -43,6 +48,27 @@ class PhaseProduct {
     theta_e_ = Atan2(b - A * a, a + A * b);
   }
 
+  // The product at every offset in `delta` (a fit's nodes). For two Henyey-Greenstein lobes
+  // the loop is branch-free, so compilers vectorise it: each lobe is K d^(-3/2) with
+  // d = (1 - |g|)^2 + 2 |g| (1 - r) + 4 |g| r w^2, w the sine of its half angle from its peak
+  // (r = 1 for the segment lobe), a fixed combination of sin and cos of delta / 2.
+  template <std::size_t N>
+  void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
+    if (kind_ != LobeKind::HenyeyGreenstein) {
+      for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
+      return;
+    }
+    // (Computed here, not in the constructor: the Cauchy fits never need them.)
+    const LobeShape a = Shape(g_, 1, 0, SinCos(lower_ / 2)), b = Shape(g_point_, r_, one_minus_r_, SinCos(theta_e_ / 2));
+    for (std::size_t j = 0; j < N; ++j) {
+      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
+      Real wa = half.sin * a.from_sin + half.cos * a.from_cos, wb = half.sin * b.from_sin + half.cos * b.from_cos;
+      Real da = a.base + a.slope * wa * wa, db = b.base + b.slope * wb * wb;
+      Real ra = RsqrtLanes(da), rb = RsqrtLanes(db);
+      out[j] = a.scale * (ra * ra * ra) * (b.scale * (rb * rb * rb));
+    }
+  }
+
   Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
 
   // HenyeyGreenstein(g, -sin theta) with scattering angle x = theta + pi/2 = delta - lower:
@@ -57,12 +83,10 @@ class PhaseProduct {
   }
 
   Real point_lobe(Real delta) const {
-    Real phi = delta - theta_e_;
+    Real phi = delta - theta_e_, s2 = Sqr(std::sin(phi / 2));  // 1 -+ r cos(phi), exact near both peaks
     switch (kind_) {
-      case LobeKind::HenyeyGreenstein: {
-        Real s2 = SinSqrHalf(phi);  // 1 -+ r cos(phi), exact near both peaks
+      case LobeKind::HenyeyGreenstein:
         return HenyeyGreenstein(g_point_, one_minus_r_ + 2 * r_ * s2, one_minus_r_ + 2 * r_ * (1 - s2));
-      }
       case LobeKind::ClampedCosine: return std::max(r_ * std::cos(phi), Real(0)) * kInvPi<Real>;
       case LobeKind::None: break;
     }
@@ -92,6 +116,16 @@ class PhaseProduct {
       if (DistanceToInterval(image) < DistanceToInterval(best)) best = image;
     return best;
   }
+  // Where a piecewise-linear fit must have a node, in increasing order: the point lobe's
+  // peak when it lies inside the interval (Novák's split). Returns how many.
+  int splits(std::array<Real, 2>& out) const {
+    Real peak = point_peak();
+    if (point_lobe_flat() || !(peak > 0 && peak < width_)) return 0;
+    out[0] = peak;
+    return 1;
+  }
+  Real lower_pole() const { return lower_; }  // the offset of theta = -pi/2
+
   Real segment_peak_value() const { return HenyeyGreensteinPeak(g_); }
   Real point_peak_value() const {
     if (kind_ == LobeKind::ClampedCosine) return r_ * kInvPi<Real>;
@@ -100,6 +134,28 @@ class PhaseProduct {
   }
 
  private:
+  // One Henyey-Greenstein lobe as evaluate() needs it (see there).
+  struct LobeShape {
+    Real from_sin = 0, from_cos = 0, base = 1, slope = 0, scale = kInvPi<Real> / 4;
+  };
+  // rotation: sin and cos of the lobe's half angle at delta = 0 (r = 1 for the segment
+  // lobe). The half angle from the peak is that one for g >= 0 and its complement for g < 0.
+  static LobeShape Shape(Real g, Real r, Real one_minus_r, SinCosPair<Real> rotation) {
+    Real ag = std::abs(g);
+    LobeShape s;
+    if (g >= 0) {
+      s.from_sin = rotation.cos;
+      s.from_cos = -rotation.sin;
+    } else {
+      s.from_sin = rotation.sin;
+      s.from_cos = rotation.cos;
+    }
+    s.base = Sqr(1 - ag) + 2 * ag * one_minus_r;
+    s.slope = 4 * ag * r;
+    s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
+    return s;
+  }
+
   Real DistanceToInterval(Real x) const { return x < 0 ? -x : std::max(x - width_, Real(0)); }
 
   Real g_, g_point_;

@@ -45,10 +45,6 @@ Real Atan2(Real y, Real x) {
   }
 }
 
-// sin^2(x / 2): the half-angle form keeps 1 - cos(x) exact near x = 0.
-template <typename Real>
-Real SinSqrHalf(Real x) { return Sqr(std::sin(x / 2)); }
-
 // asinh(xa + dx) - asinh(xa) for dx >= 0, without the cancellation of the naive difference
 // when both arguments are large and of one sign.
 template <typename Real>

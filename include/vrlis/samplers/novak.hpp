@@ -4,7 +4,7 @@
 //
 // If the point lobe's peak lies inside the interval the nodes are split there, and on each
 // side they follow a cosine-warped spacing, dense near both ends of the side; the density
-// is core/piecewise_linear.hpp's.
+// is core/piecewise_linear.hpp's. (FullProduct splits at its target's peaks too.)
 #include <algorithm>
 #include <array>
 #include <string_view>
@@ -16,11 +16,12 @@
 namespace vrlis {
 
 // A piecewise-linear fit of a target over the angle domain. Target is constructed from
-// (query, domain) and offers operator()(delta), point_lobe_flat(), point_peak() and
-// kRelativeFloor (node values are raised to that fraction of the largest one).
+// (query, domain) and offers evaluate(deltas, values), splits(points) (the offsets where a
+// node must sit, at most two) and kRelativeFloor (node values are raised to that fraction
+// of the largest one).
 template <typename R, int kNodes = 10, typename Target = PhaseProduct<R>>
 class PiecewiseLinearAngle {
-  static_assert(kNodes >= 3, "Novak's split needs at least one interval on each side");
+  static_assert(kNodes >= 3, "a split needs at least one interval on each side");
 
  public:
   using Real = R;
@@ -29,16 +30,22 @@ class PiecewiseLinearAngle {
   PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : width_(dom.width()) {
     Target target(q, dom);
     std::array<Real, kNodes> node, value;
-    Real peak = target.point_peak() / width_;
-    if (!target.point_lobe_flat() && peak > 0 && peak < 1) {
-      int split = static_cast<int>(std::lround(peak * (kNodes - 1)));
-      split = Clamp(split, 1, kNodes - 2);
-      PlaceWarped(node, 0, Real(0), peak, split);
-      PlaceWarped(node, split, peak, Real(1), kNodes - 1 - split);
-    } else {
-      PlaceWarped(node, 0, Real(0), Real(1), kNodes - 1);
+    // Each side of a split gets at least one interval, the rest in proportion to its width.
+    std::array<Real, 2> splits;
+    int n = std::min(target.splits(splits), kNodes - 2);
+    Real start = 0;
+    int first = 0;
+    for (int k = 0; k <= n; ++k) {
+      Real end = k < n ? splits[k] / width_ : Real(1);
+      int last = k < n ? Clamp(static_cast<int>(std::lround(end * (kNodes - 1))), first + 1, kNodes - 1 - (n - k))
+                       : kNodes - 1;
+      PlaceWarped(node, first, start, end, last - first);
+      start = end;
+      first = last;
     }
-    for (int j = 0; j < kNodes; ++j) value[j] = target(node[j] * width_);
+    std::array<Real, kNodes> at;
+    for (int j = 0; j < kNodes; ++j) at[j] = node[j] * width_;
+    target.evaluate(at, value);
     Real largest = *std::max_element(value.begin(), value.end());
     if (largest > 0 && std::isfinite(largest))
       for (Real& v : value) v = std::max(v / largest, Target::kRelativeFloor);

@@ -1,0 +1,87 @@
+// The library's medium-to-medium gather as a renderer calls it, and its parts:
+//
+//   Gather/<method>/g:<g>   SampleMediumGather: validation, step one (VrlPoint: fit, sample,
+//                           pdf), the camera sampler chosen at run time (fit, sample, pdf),
+//                           the integrand and the weight; everything but the occlusion ray
+//   GatherPart/validate     Validate(MediumGatherQuery)
+//   GatherPart/step-one     VrlPoint from the gather query, sample_pdf
+//   GatherPart/integrand    MediumGatherIntegrand at a sampled (t, v), with its transmittance
+//
+// The camera step's own parts are Fit/<Sampler> (the fit) and Camera/<Sampler> (fit, sample,
+// pdf). docs/bench.md (section "Cost of one gather") puts these together with a profile of
+// vrl_render (occlusion ray, random numbers, bookkeeping).
+#include "bench_common.hpp"
+
+#include <vrlis/gather/medium_gather.hpp>
+
+namespace vrlis::bench {
+namespace {
+
+inline constexpr double kGatherG[] = {-0.9, 0.5, 0.9};
+
+const MediumGatherQuery<float>& GatherQuery(const Config<float>& c) { return c.query; }
+
+void Gather(benchmark::State& state, Method method, double g) {
+  const Pools& pools = PoolsFor(g);
+  GatherMethod m{method, VrlSamplers::Of<VrlPointEntry>()};
+  size_t i = 0;
+  for (auto _ : state) {
+    GatherSample<float> s = SampleMediumGather(m, pools.configs[i].query, pools.configs[i].xi_vrl, pools.configs[i].xi_cam);
+    benchmark::DoNotOptimize(s);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void Validation(benchmark::State& state) {
+  const Pools& pools = PoolsFor(0.5);
+  size_t i = 0;
+  for (auto _ : state) {
+    QueryError e = Validate(GatherQuery(pools.configs[i]));
+    benchmark::DoNotOptimize(e);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void StepOne(benchmark::State& state) {
+  const Pools& pools = PoolsFor(0.5);
+  size_t i = 0;
+  for (auto _ : state) {
+    VrlPoint<float> vp(GatherQuery(pools.configs[i]));
+    SegmentSample<float> v = vp.sample_pdf(pools.configs[i].xi_vrl);
+    benchmark::DoNotOptimize(v);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void Integrand(benchmark::State& state) {
+  const Pools& pools = PoolsFor(0.5);
+  size_t i = 0;
+  for (auto _ : state) {
+    const Config<float>& c = pools.configs[i];
+    const auto& q = c.query;
+    float transmittance = 0;
+    float t = std::isfinite(q.camera.tmax) ? q.camera.tmin + c.xi_cam * (q.camera.tmax - q.camera.tmin) : q.camera.tmin + c.xi_cam;
+    float f = MediumGatherIntegrand(q, t, c.xi_vrl * q.vrl.length, &transmittance);
+    benchmark::DoNotOptimize(f);
+    benchmark::DoNotOptimize(transmittance);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+}  // namespace
+
+void RegisterGather() {
+  for (Method method : kMethods)
+    for (double g : kGatherG)
+      benchmark::RegisterBenchmark(BenchName("Gather", std::string(method.name()).c_str(), g).c_str(),
+                                   [method, g](benchmark::State& s) { Gather(s, method, g); });
+  benchmark::RegisterBenchmark("GatherPart/validate", Validation);
+  benchmark::RegisterBenchmark("GatherPart/step-one", StepOne);
+  benchmark::RegisterBenchmark("GatherPart/integrand", Integrand);
+}
+
+}  // namespace vrlis::bench

@@ -1,0 +1,147 @@
+#!/usr/bin/env bash
+# Speed of this tree against a baseline commit, measured as ratios in one run: the two
+# builds' binaries are interleaved run by run (a shared machine slows both alike), and
+# each cell is the median of the repetitions.
+#
+#   tools/speed.sh [outdir=out/speed]
+#
+# Prints (and writes to <outdir>/speed.md):
+# - vrl_render VRL gathers per second, per scene x sampler x build, on 1 and 2 threads, and
+#   the 2-thread speedup;
+# - vrlis_bench's camera step per sample (fit + sample + pdf), per sampler x g x build, and
+#   the ratios CauchySum / Novak and CauchyMixture / Novak.
+# Environment: VRLIS_SPEED_BASE (a configured baseline build dir; default: commit
+# VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base),
+# VRLIS_SPEED_BUILD (this tree's build dir; default build/, built here), VRLIS_SPEED_REPS (5),
+# VRLIS_SPEED_SCENES (bidirectional cube), VRLIS_SPEED_SAMPLERS (equiangular novak
+# cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (64: image side), VRLIS_SPEED_SPP (2).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-out/speed}
+reps=${VRLIS_SPEED_REPS:-5}
+scenes=${VRLIS_SPEED_SCENES:-bidirectional cube}
+samplers=${VRLIS_SPEED_SAMPLERS:-equiangular novak cauchy-sum cauchy-mixture full-product}
+size=${VRLIS_SPEED_SIZE:-64}
+spp=${VRLIS_SPEED_SPP:-2}
+mkdir -p "$out/runs"
+
+configure() {  # source dir, build dir
+  cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_BUILD_TESTS=OFF -DVRLIS_BUILD_BENCH=ON \
+    -DVRLIS_BUILD_EXAMPLES=ON >/dev/null
+  cmake --build "$2" --target vrl_render vrlis_bench -j"$(nproc)" >/dev/null
+}
+new=${VRLIS_SPEED_BUILD:-build}
+[ -n "${VRLIS_SPEED_BUILD:-}" ] || configure . "$new"
+base=${VRLIS_SPEED_BASE:-}
+if [ -z "$base" ]; then
+  ref=${VRLIS_SPEED_BASE_REF:-146a16a}
+  rm -rf "$out/base-src" && mkdir -p "$out/base-src"
+  git archive "$ref" | tar -x -C "$out/base-src"
+  base="$out/base"
+  configure "$out/base-src" "$base"
+fi
+
+echo "== vrl_render: $reps rounds, builds interleaved (${size}x${size}, $spp passes)"
+for rep in $(seq "$reps"); do
+  for scene in $scenes; do
+    for sampler in $samplers; do
+      for threads in 1 2; do
+        for build in base new; do
+          dir=$([ "$build" = base ] && echo "$base" || echo "$new")
+          stem="$out/runs/${scene}_${sampler}_${threads}_${build}_$rep"
+          "$dir/examples/vrl_render" --scene "$scene" --sampler "$sampler" --threads "$threads" --width "$size" \
+            --height "$size" --spp "$spp" --quiet --out "$stem" >/dev/null
+        done
+      done
+    done
+  done
+  echo "   round $rep done"
+done
+
+echo "== vrlis_bench Gather/*, GatherPart/*, Fit/*: this tree only"
+"$new/bench/vrlis_bench" --benchmark_filter='^Gather|^Fit/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
+  --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+  --benchmark_out="$out/runs/parts.json" --benchmark_out_format=json >/dev/null
+if command -v perf >/dev/null; then
+  echo "== perf profile of vrl_render (bidirectional, novak, 1 thread)"
+  perf record -q -o "$out/runs/perf.data" "$new/examples/vrl_render" --scene bidirectional --sampler novak --threads 1 \
+    --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf" >/dev/null 2>&1 || true
+  perf report -q -i "$out/runs/perf.data" --no-children --sort symbol --stdio 2>/dev/null | grep -E '^ +[0-9]' |
+    head -15 >"$out/runs/perf.txt" || true
+fi
+
+echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
+for rep in $(seq "$reps"); do
+  for build in base new; do
+    dir=$([ "$build" = base ] && echo "$base" || echo "$new")
+    "$dir/bench/vrlis_bench" --benchmark_filter='^Camera/' --benchmark_min_time=0.05 \
+      --benchmark_out="$out/runs/bench_${build}_$rep.json" --benchmark_out_format=json >/dev/null
+  done
+done
+
+/usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" <<'EOF' | tee "$out/speed.md"
+import json, math, statistics, sys
+out, reps, scenes, samplers = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(), sys.argv[4].split()
+def gps(scene, sampler, threads, build):
+    return statistics.median(json.load(open(f"{out}/runs/{scene}_{sampler}_{threads}_{build}_{r}.json"))["gathers_per_second"]
+                             for r in range(1, reps + 1))
+print(f"VRL gathers per second (median of {reps} interleaved runs; M = 1e6)\n")
+print("| scene | sampler | base 1T | new 1T | new / base 1T | base 2T | new 2T | new / base 2T | 2T / 1T base | 2T / 1T new |")
+print("|---|---|---|---|---|---|---|---|---|---|")
+for scene in scenes:
+    for s in samplers:
+        b1, n1, b2, n2 = (gps(scene, s, t, b) for t, b in ((1, "base"), (1, "new"), (2, "base"), (2, "new")))
+        print(f"| {scene} | {s} | {b1/1e6:.2f} M | {n1/1e6:.2f} M | **{n1/b1:.2f}** | {b2/1e6:.2f} M | {n2/1e6:.2f} M | "
+              f"{n2/b2:.2f} | {b2/b1:.2f} | **{n2/n1:.2f}** |")
+times = {}
+for build in ("base", "new"):
+    runs = [json.load(open(f"{out}/runs/bench_{build}_{r}.json"))["benchmarks"] for r in range(1, reps + 1)]
+    for name in {b["name"] for b in runs[0]}:
+        times[build, name] = statistics.median(b["cpu_time"] for run in runs for b in run if b["name"] == name)
+names = sorted({n for _, n in times}, key=lambda n: (n.split("/")[1], float(n.split(":")[1])))
+gs = sorted({float(n.split(":")[1]) for n in names})
+cams = ["Equiangular", "Novak", "CauchySum", "CauchyMixture", "FullProduct"]
+def t(build, cam, g): return times.get((build, f"Camera/{cam}/g:{g:.2f}"))
+print(f"\nCamera step per sample, ns (fit + sample + pdf, float; median of {reps} interleaved runs)\n")
+print("| g | " + " | ".join(f"{c} base | {c} new" for c in cams) + " | CSum/Novak base | CSum/Novak new | CMix/Novak base | CMix/Novak new |")
+print("|---|" + "---|" * (2 * len(cams) + 4))
+def geo(xs): return math.exp(sum(map(math.log, xs)) / len(xs))
+for g in gs:
+    row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
+    ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
+    print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
+parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/parts.json"))["benchmarks"]
+         if b.get("aggregate_name") == "median"}
+print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray)\n")
+print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest |")
+print("|---|---|---|---|---|---|---|---|---|")
+for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
+    for g in (-0.9, 0.5, 0.9):
+        whole, fit, cam = parts[f"Gather/{m}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], t("new", c, g)
+        v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
+        print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} |")
+try:
+    prof = open(f"{out}/runs/perf.txt").read().rstrip()
+    print("\nProfile of `vrl_render --scene bidirectional --sampler novak --threads 1` (perf, self time, top symbols):\n")
+    print("```\n" + prof + "\n```")
+except OSError:
+    pass
+print("\nGeometric mean over g: " + ", ".join(f"{c} new / base {geo([t('new', c, g) / t('base', c, g) for g in gs]):.2f}" for c in cams))
+for c in ("CauchySum", "CauchyMixture"):
+    print(f"{c} / Novak: base {geo([t('base', c, g) / t('base', 'Novak', g) for g in gs]):.2f}, "
+          f"new {geo([t('new', c, g) / t('new', 'Novak', g) for g in gs]):.2f}")
+EOF
+
+# The generated section of docs/bench.md (tools/bench.sh keeps it when it rewrites the rest).
+if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
+  model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
+  { sed '/^<!-- speed -->$/,$d' docs/bench.md
+    echo '<!-- speed -->'
+    echo '## Speed against the baseline and the cost of one gather'
+    echo
+    echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`tools/speed.sh\`"
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds)."
+    echo
+    cat "$out/speed.md"; } >"$out/bench.md.new"
+  mv "$out/bench.md.new" docs/bench.md
+fi
