@@ -21,7 +21,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, vrlis::Met
         for (const Vrl& vrl : vrls) L += beta * GatherMediumToMedium(method, scene, seg, vrl, rng);
         count->medium_to_medium += vrls.size();
       }
-      if (tr.direct) L += beta * SingleScattering(method, scene, seg, rng);
+      if (tr.direct && tr.single_scattering) L += beta * SingleScattering(method, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {

@@ -20,6 +20,19 @@ bool Usable(const Sample& s) { return s.pdf > 0 && std::isfinite(s.pdf) && std::
 
 }  // namespace
 
+Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, const Vrl& vrl, float v, float t) {
+  const HomogeneousMedium& m = scene.medium;
+  Vec3f y = vrl.origin + v * vrl.dir, x = seg.ray(t), w = y - x;
+  float r2 = Dot(w, w);
+  if (!(r2 > 0)) return {};
+  Vec3f wh = (1 / std::sqrt(r2)) * w;  // from the camera point to the VRL point
+  float tr = scene.Connect(x, y);
+  if (tr == 0) return {};
+  float f = m.sigma_s * m.sigma_s * Phase(m.g, Dot(seg.ray.d, wh)) * Phase(m.g, -Dot(vrl.dir, wh)) *
+            std::exp(-m.SigmaT() * (t - seg.iv.a + v)) * tr / r2;
+  return vrl.flux * f;
+}
+
 Spectrum GatherMediumToMedium(vrlis::Method method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng) {
   const HomogeneousMedium& m = scene.medium;
@@ -33,15 +46,7 @@ Spectrum GatherMediumToMedium(vrlis::Method method, const Scene& scene, const Ca
       vrlis::MediumToMediumQuery(seg.ray.o, seg.ray.d, seg.iv.a, seg.iv.b, y, vrl.dir, m.g, m.SigmaT());
   Sample s = SampleSegment(method, q, rng.Uniform());
   if (!Usable(s)) return {};
-  Vec3f x = seg.ray(s.t), w = y - x;
-  float r2 = Dot(w, w);
-  if (!(r2 > 0)) return {};
-  Vec3f wh = (1 / std::sqrt(r2)) * w;  // from the camera point to the VRL point
-  float tr = scene.Connect(x, y);
-  if (tr == 0) return {};
-  float f = m.sigma_s * m.sigma_s * Phase(m.g, Dot(seg.ray.d, wh)) * Phase(m.g, -Dot(vrl.dir, wh)) *
-            std::exp(-m.SigmaT() * (s.t - seg.iv.a + v)) * tr / r2;
-  return vrl.flux * (f / (s.pdf * pv));
+  return MediumToMediumIntegrand(scene, seg, vrl, v, s.t) * (1 / (s.pdf * pv));
 }
 
 Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
