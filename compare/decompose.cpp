@@ -1,5 +1,6 @@
 #include "decompose.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -155,18 +156,22 @@ vrlis::VrlPoint<float> StepOne(const vrli::CameraSegment& seg, const vrli::Vrl& 
 
 void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, const DecomposeConfig& c,
                 DecomposeResult* out) {
-  struct Pixel {
-    vrli::CameraSegment seg;
+  // Pixels whose centre sees the medium; each pass jitters its ray inside the pixel as the
+  // renderer does, so the pixel filter's share is in the light paths' column.
+  std::vector<std::pair<int, int>> pixels;
+  auto segment = [&](float x, float y) {
+    vrli::Ray ray = scene.camera.Generate(x, y, c.width, c.height);
+    vrli::SurfaceHit hit;
+    bool found = scene.Intersect(ray, &hit);
+    return vrli::CameraSegment{ray, scene.medium.Clip(ray, found ? hit.t : vrli::kInfinity)};
   };
-  std::vector<Pixel> pixels;
-  for (int y = c.stride / 2; y < c.height; y += c.stride)
-    for (int x = c.stride / 2; x < c.width; x += c.stride) {
-      vrli::Ray ray = scene.camera.Generate(x + 0.5f, y + 0.5f, c.width, c.height);
-      vrli::SurfaceHit hit;
-      bool found = scene.Intersect(ray, &hit);
-      vrli::Interval iv = scene.medium.Clip(ray, found ? hit.t : vrli::kInfinity);
-      if (!iv.Empty()) pixels.push_back({{ray, iv}});
-    }
+  for (int y = 0; y < c.height; ++y)
+    for (int x = 0; x < c.width; ++x)
+      if (!segment(x + 0.5f, y + 0.5f).iv.Empty()) pixels.emplace_back(x, y);
+  // An even subset, in scan order, of at most max_pixels.
+  const std::size_t keep = std::min(pixels.size(), static_cast<std::size_t>(c.max_pixels));
+  for (std::size_t i = 0; i < keep; ++i) pixels[i] = pixels[i * pixels.size() / keep];
+  pixels.resize(keep);
   out->step_pixels = static_cast<int>(pixels.size());
   if (pixels.empty() || !settings.transport.medium_to_medium) return;
 
@@ -183,8 +188,10 @@ void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, 
           vrli::TraceLightPaths(scene, settings.transport, c.vrls, seeds[rep], static_cast<std::uint64_t>(pass));
       std::vector<std::vector<double>> values(columns, std::vector<double>(3 * n));
       tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        const vrli::CameraSegment& seg = pixels[i].seg;
         vrli::Rng rng(seeds[rep], static_cast<std::uint64_t>(pass), i, vrli::StreamPurpose::Camera);
+        const float jx = rng.Uniform(), jy = rng.Uniform();
+        const vrli::CameraSegment seg = segment(static_cast<float>(pixels[i].first) + jx, static_cast<float>(pixels[i].second) + jy);
+        if (seg.iv.Empty()) return;
         for (std::size_t s = 0; s < c.samplers.size(); ++s) {
           vrli::Spectrum sum;
           for (const vrli::Vrl& vrl : vrls) sum += GatherWith(c.samplers[s], scene, seg, vrl, rng);
@@ -208,7 +215,7 @@ void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, 
   out->step_passes = pass * c.replicates;
   for (std::size_t s = 0; s < c.samplers.size(); ++s) out->gathers.push_back({c.samplers[s], stats[s].PassVariance()});
   out->step_one_variance = stats[columns - 2].PassVariance();
-  out->light_paths_variance = stats[columns - 1].PassVariance();
+  out->paths_and_pixel_variance = stats[columns - 1].PassVariance();
 }
 
 }  // namespace

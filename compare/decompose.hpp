@@ -3,9 +3,9 @@
 // medium-to-surface, single scattering, direct, the path-traced remainder): its per-pass
 // variance and its seconds per pass, each part rendered alone with the same seeds as the
 // whole image. (2) Inside the medium-to-medium gather, on the primary camera segment of a
-// grid of pixel centres: the per-pass variance of the gather as rendered, with step two
-// (the camera sampler) replaced by quadrature, and with both steps by quadrature (what is
-// left is the light paths' own variance).
+// grid of pixels (rays jittered as rendered): the per-pass variance of the gather as
+// rendered, with step two (the camera sampler) replaced by quadrature, and with both steps
+// by quadrature (what is left comes from the light paths and the pixel jitter).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,7 +23,7 @@ struct DecomposeConfig {
   double budget = 20;             // seconds for (1), all parts together
   double step_budget = 15;        // seconds for (2)
   int replicates = 8;             // batches for the standard errors
-  int stride = 8;                 // (2) uses every stride-th pixel centre in x and y
+  int max_pixels = 48;            // (2) uses an even subset of the pixels that see the medium
   std::uint64_t seed = 1;
 };
 
@@ -50,7 +50,7 @@ struct DecomposeResult {
   Estimate total_variance;  // of the whole image (parts' covariances included)
   double total_seconds = 0, base_seconds = 0;
   int step_pixels = 0, step_passes = 0;
-  Estimate light_paths_variance;  // both steps by quadrature
+  Estimate paths_and_pixel_variance;  // both steps by quadrature: light paths and pixel jitter
   Estimate step_one_variance;     // step two by quadrature
   std::vector<StepResult> gathers;
 };

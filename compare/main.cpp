@@ -118,8 +118,8 @@ nlohmann::json DecompositionJson(const DecomposeResult& d) {
           {"vrls", d.config.vrls}, {"sampler", SamplerName(d.config.sampler)}, {"passes", d.passes},
           {"parts", parts}, {"total_variance", ToJson(d.total_variance)}, {"total_seconds", d.total_seconds},
           {"base_seconds", d.base_seconds},
-          {"steps", {{"pixels", d.step_pixels}, {"stride", d.config.stride}, {"passes", d.step_passes},
-                     {"light_paths_variance", ToJson(d.light_paths_variance)},
+          {"steps", {{"pixels", d.step_pixels}, {"max_pixels", d.config.max_pixels}, {"passes", d.step_passes},
+                     {"paths_and_pixel_variance", ToJson(d.paths_and_pixel_variance)},
                      {"step_one_variance", ToJson(d.step_one_variance)}, {"gathers", gathers}}}};
 }
 
