@@ -24,16 +24,26 @@ class Batched {
  public:
   Batched(std::size_t batches, std::size_t values) : batches_(batches, PassStatistics(values)) {}
   void Add(std::size_t batch, const std::vector<double>& pass) { batches_[batch].Add(pass); }
-  Estimate PassVariance() const {
+  Estimate PassVariance() const { return MeanAndError(BatchVariances()); }
+  // What this quantity's per-pass variance adds to `other`'s: a paired difference, batch by batch.
+  Estimate VarianceOver(const Batched& other) const {
+    std::vector<double> a = BatchVariances(), b = other.BatchVariances();
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] -= b[i];
+    return MeanAndError(a);
+  }
+
+ private:
+  std::vector<double> BatchVariances() const {
     std::vector<double> v;
     for (const PassStatistics& b : batches_) v.push_back(b.MeanPassVariance());
+    return v;
+  }
+  static Estimate MeanAndError(const std::vector<double>& v) {
     const double n = static_cast<double>(v.size()), mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
     double ss = 0;
     for (double x : v) ss += (x - mean) * (x - mean);
     return {mean, std::sqrt(ss / (n - 1) / n)};
   }
-
- private:
   std::vector<PassStatistics> batches_;
 };
 
@@ -213,9 +223,11 @@ void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, 
       for (std::size_t k = 0; k < columns; ++k) stats[k].Add(rep, values[k]);
     }
   out->step_passes = pass * c.replicates;
-  for (std::size_t s = 0; s < c.samplers.size(); ++s) out->gathers.push_back({c.samplers[s], stats[s].PassVariance()});
-  out->step_one_variance = stats[columns - 2].PassVariance();
-  out->paths_and_pixel_variance = stats[columns - 1].PassVariance();
+  const Batched &one = stats[columns - 2], &neither = stats[columns - 1];
+  for (std::size_t s = 0; s < c.samplers.size(); ++s)
+    out->gathers.push_back({c.samplers[s], stats[s].PassVariance(), stats[s].VarianceOver(one)});
+  out->step_one = one.VarianceOver(neither);
+  out->paths_and_pixel_variance = neither.PassVariance();
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ struct PartResult {
 struct StepResult {
   Sampler sampler{};
   Estimate variance;  // the gather as rendered
+  Estimate step_two;  // what its step two adds: variance as rendered minus with step two by quadrature
 };
 
 struct DecomposeResult {
@@ -51,7 +52,7 @@ struct DecomposeResult {
   double total_seconds = 0, base_seconds = 0;
   int step_pixels = 0, step_passes = 0;
   Estimate paths_and_pixel_variance;  // both steps by quadrature: light paths and pixel jitter
-  Estimate step_one_variance;     // step two by quadrature
+  Estimate step_one;                  // what step one adds (step two by quadrature, minus both)
   std::vector<StepResult> gathers;
 };
 

@@ -113,14 +113,14 @@ nlohmann::json DecompositionJson(const DecomposeResult& d) {
   nlohmann::json parts = nlohmann::json::array(), gathers = nlohmann::json::array();
   for (const auto& p : d.parts)
     parts.push_back({{"part", p.name}, {"variance", ToJson(p.variance)}, {"seconds_per_pass", p.seconds}});
-  for (const auto& s : d.gathers) gathers.push_back({{"sampler", SamplerName(s.sampler)}, {"variance", ToJson(s.variance)}});
+  for (const auto& s : d.gathers) gathers.push_back({{"sampler", SamplerName(s.sampler)}, {"variance", ToJson(s.variance)}, {"step_two", ToJson(s.step_two)}});
   return {{"scene", d.config.scene}, {"g", d.g}, {"width", d.config.width}, {"height", d.config.height},
           {"vrls", d.config.vrls}, {"sampler", SamplerName(d.config.sampler)}, {"passes", d.passes},
           {"parts", parts}, {"total_variance", ToJson(d.total_variance)}, {"total_seconds", d.total_seconds},
           {"base_seconds", d.base_seconds},
           {"steps", {{"pixels", d.step_pixels}, {"max_pixels", d.config.max_pixels}, {"passes", d.step_passes},
                      {"paths_and_pixel_variance", ToJson(d.paths_and_pixel_variance)},
-                     {"step_one_variance", ToJson(d.step_one_variance)}, {"gathers", gathers}}}};
+                     {"step_one", ToJson(d.step_one)}, {"gathers", gathers}}}};
 }
 
 }  // namespace
