@@ -35,22 +35,23 @@ struct Runner {
 };
 
 // "best" for the most efficient sampler when its interval against the runner-up lies above
-// 1; otherwise "tie" for it and for every sampler its interval does not separate from it.
-void Decide(StudyResult& r) {
+// the margin; otherwise "tie" for it and for every sampler its interval does not separate
+// from it.
+void Decide(StudyResult& r, double margin) {
   std::vector<SamplerResult*> order;
   for (SamplerResult& s : r.samplers) order.push_back(&s);
   std::sort(order.begin(), order.end(),
             [](const SamplerResult* a, const SamplerResult* b) { return a->efficiency > b->efficiency; });
   SamplerResult& top = *order[0];
   r.top_vs_runner_up = EfficiencyRatio(top.replicates, order[1]->replicates);
-  if (r.top_vs_runner_up.Above(1)) {
+  if (r.top_vs_runner_up.Above(margin)) {
     top.verdict = r.verdict = "best";
     return;
   }
   r.verdict = "tie";
   top.verdict = "tie";
   for (std::size_t i = 1; i < order.size(); ++i)
-    if (!EfficiencyRatio(top.replicates, order[i]->replicates).Above(1)) order[i]->verdict = "tie";
+    if (!EfficiencyRatio(top.replicates, order[i]->replicates).Above(margin)) order[i]->verdict = "tie";
 }
 
 }  // namespace
@@ -140,7 +141,7 @@ StudyResult RunStudy(const StudyConfig& config) {
   }
   std::sort(widths.begin(), widths.end());
   out.resolution = widths.empty() ? 1 : widths[widths.size() / 2];
-  Decide(out);
+  Decide(out, config.margin);
   out.reference_image = std::move(reference.mean);
   return out;
 }

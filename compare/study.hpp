@@ -21,6 +21,9 @@ struct StudyConfig {
   int vrls = 32;                  // light paths per pass
   double budget = 5;              // seconds per sampler, at least
   int replicates = 8;
+  // "best" needs the interval against the runner-up above this: the interval sees the spread
+  // between replicates, not the drift of a shared machine's timings from one run to the next.
+  double margin = 1.05;
   double reference_seconds = 15;  // for the mixture reference, all samplers together
   std::vector<Sampler> samplers;  // includes kBaseline
   std::uint64_t seed = 1;
