@@ -132,10 +132,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> sampler_names;
   bool full = false, decompose = false;
   StudyConfig base;
-  double reference_factor = 3, decompose_seconds = 20, step_seconds = 15;
+  double reference_factor = 2, decompose_seconds = 20, step_seconds = 15;
   int threads = 2;
   std::string out = "out/compare";
-  app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, budget 11 s (the published run)");
+  app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, budget 12 s (the published run)");
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
   if (full) {
     if (app.count("--scenes") == 0) scenes.assign(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end());
     if (app.count("--g") == 0) gs = {-0.9f, -0.5f, 0.f, 0.5f, 0.9f};
-    if (app.count("--budget") == 0) base.budget = 11;
+    if (app.count("--budget") == 0) base.budget = 12;
   }
   if (decompose && app.count("--scenes") == 0)
     scenes.assign(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end());

@@ -19,8 +19,8 @@ struct StudyConfig {
   float g = 0;
   int width = 48, height = 48;
   int vrls = 32;                  // light paths per pass
-  double budget = 5;              // seconds per sampler, at least
-  int replicates = 8;
+  double budget = 8;              // seconds per sampler, at least
+  int replicates = 12;
   // "best" needs the interval against the runner-up above this: the interval sees the spread
   // between replicates, not the drift of a shared machine's timings from one run to the next.
   double margin = 1.05;

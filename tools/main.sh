@@ -4,7 +4,7 @@
 # 5 minutes on 2 cores, 3 of them once the references are cached); prints the table with
 # 95% intervals and what each study could resolve, and writes charts under out/compare.
 #   tools/main.sh            the default study
-#   tools/main.sh --full     every scene, g in {-0.9, -0.5, 0, 0.5, 0.9}, 11 s per sampler (~35 min)
+#   tools/main.sh --full     every scene, g in {-0.9, -0.5, 0, 0.5, 0.9}, 12 s per sampler (~30 min)
 #   tools/main.sh --publish  also write docs/compare/results.md, its charts and the README table
 # Other arguments go to vrl_compare (see build/compare/vrl_compare --help), e.g. --seed 2.
 set -euo pipefail
