@@ -309,6 +309,7 @@ def conclusion(d, var, time, split):
     """The scene's verdict in words: which term a better sampler would have to improve."""
     part_sum = sum(var.values()) or 1
     time_sum = sum(time.values()) or 1
+    whole = d["total_variance"]["value"] or part_sum
     top = max(var, key=var.get)
     sampler_parts = ("medium-to-medium", "medium-to-surface", "single scattering")
     step_two = split.get("step two (camera sampler)", 0.0)
@@ -317,7 +318,8 @@ def conclusion(d, var, time, split):
     words = (
         f"**{d['scene']}**: {top} carries {pct(var[top] / part_sum)} of the per-pass variance. "
         f"The parts the camera sampler touches (the medium-to-medium gather's step two, the medium-to-surface "
-        f"gather, single scattering) hold at most {pct(reach / part_sum)} of it, and the two VRL gathers take "
+        f"gather, single scattering) hold at most {pct(reach / part_sum)} of it ({pct(reach / whole)} of the whole "
+        f"image's), and the two VRL gathers take "
         f"{pct(gather_time / time_sum)} of the time. "
     )
     if top in sampler_parts and (top != "medium-to-medium" or step_two >= 0.5):

@@ -16,5 +16,5 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target vrl_compare -j "$(nproc)"
 out=out/compare
 build/compare/vrl_compare --decompose --out "$out" "${args[@]}" >/dev/null
-/usr/bin/python3 compare/plot.py "$out" --decompose ${publish:+--publish "$publish"} --command "tools/decompose.sh $*"
+/usr/bin/python3 compare/plot.py "$out" --decompose ${publish:+--publish "$publish"} --command "tools/decompose.sh${*:+ $*}"
 echo "page and charts: $out/decompose/decomposition.md"

@@ -19,5 +19,5 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target vrl_compare -j "$(nproc)"
 out=out/compare
 build/compare/vrl_compare --out "$out" "${args[@]}"
-/usr/bin/python3 compare/plot.py "$out" ${publish:+--publish "$publish"} --command "tools/main.sh $*"
+/usr/bin/python3 compare/plot.py "$out" ${publish:+--publish "$publish"} --command "tools/main.sh${*:+ $*}"
 echo "efficiency chart: $out/efficiency.png; images: $out/<scene>_g<g>/"
