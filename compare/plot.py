@@ -42,7 +42,7 @@ PART_COLOURS = {
     "light paths, camera rays": "lightgray",
     "light paths and pixel": "lightsteelblue",
     "step one (VRL point)": "tab:cyan",
-    "step two (camera sampler)": "tab:blue",
+    "step two (camera sampler)": "midnightblue",
 }
 
 
