@@ -144,6 +144,8 @@ int main(int argc, char** argv) {
   app.add_option("--replicates", base.replicates, "Independent replicates per study (>= 3)")->capture_default_str();
   app.add_option("--margin", base.margin, "\"best\" needs the 95% interval over the runner-up above this (>= 1)")
       ->capture_default_str();
+  app.add_option("--extension", base.extension, "Undecided studies go on up to this multiple of the budget (>= 1)")
+      ->capture_default_str();
   app.add_option("--reference-factor", reference_factor, "Reference time (all samplers mixed) over the budget")
       ->capture_default_str();
   app.add_option("--decompose-seconds", decompose_seconds, "--decompose: seconds for the parts, per scene")
@@ -180,6 +182,7 @@ int main(int argc, char** argv) {
   if (!(reference_factor > 0) || !(reference_factor < 1e3)) return Fail("--reference-factor must be in (0, 1000)");
   if (!(decompose_seconds > 0) || !(step_seconds > 0) || decompose_seconds > 1e6 || step_seconds > 1e6)
     return Fail("--decompose-seconds and --step-seconds must be positive");
+  if (!(base.extension >= 1) || !(base.extension < 100)) return Fail("--extension must be in [1, 100)");
   if (!(base.margin >= 1) || !(base.margin < 100)) return Fail("--margin must be in [1, 100)");
   if (base.replicates < 3 || base.replicates > 1000) return Fail("--replicates must be in [3, 1000]");
   if (base.width <= 0 || base.height <= 0 || base.width > 8192 || base.height > 8192)

@@ -32,7 +32,27 @@ struct Runner {
   std::vector<PassStatistics> replicates;
   PassStatistics all;
   std::vector<double> seconds;  // per replicate
+
+  Replicates Summary(int per_replicate) const {
+    Replicates r;
+    for (std::size_t rep = 0; rep < replicates.size(); ++rep) {
+      r.variance.push_back(replicates[rep].MeanPassVariance());
+      r.seconds.push_back(seconds[rep] / per_replicate);
+    }
+    return r;
+  }
 };
+
+// Whether the most efficient sampler leads the runner-up by more than the margin while its
+// interval does not yet show it: such a study goes on (up to its extension), so that a
+// real winner near the threshold is not called "best" by one run and "tie" by the next.
+bool Undecided(const std::vector<Runner>& runners, int per_replicate, double margin) {
+  std::vector<Replicates> r;
+  for (const Runner& run : runners) r.push_back(run.Summary(per_replicate));
+  std::sort(r.begin(), r.end(), [](const Replicates& a, const Replicates& b) { return Efficiency(a) > Efficiency(b); });
+  RatioInterval lead = EfficiencyRatio(r[0], r[1]);
+  return lead.point > margin && !lead.Above(margin);
+}
 
 // "best" for the most efficient sampler when its interval against the runner-up lies above
 // the margin; otherwise "tie" for it and for every sampler its interval does not separate
@@ -87,8 +107,11 @@ StudyResult RunStudy(const StudyConfig& config) {
   int per_replicate = 0;
   std::size_t round = 0;
   auto spent = [&](const Runner& r) { return std::accumulate(r.seconds.begin(), r.seconds.end(), 0.0); };
-  while (per_replicate < 2 ||
-         std::any_of(runners.begin(), runners.end(), [&](const Runner& r) { return spent(r) < config.budget; })) {
+  auto below = [&](double seconds) {
+    return std::any_of(runners.begin(), runners.end(), [&](const Runner& r) { return spent(r) < seconds; });
+  };
+  while (per_replicate < 2 || below(config.budget) ||
+         (below(config.extension * config.budget) && Undecided(runners, per_replicate, config.margin))) {
     for (std::size_t rep = 0; rep < replicates; ++rep, ++round)
       for (std::size_t k = 0; k < runners.size(); ++k) {
         Runner& run = runners[(k + round) % runners.size()];
@@ -113,10 +136,7 @@ StudyResult RunStudy(const StudyConfig& config) {
     SamplerResult s;
     s.sampler = run.sampler;
     s.passes = run.all.passes();
-    for (std::size_t rep = 0; rep < replicates; ++rep) {
-      s.replicates.variance.push_back(run.replicates[rep].MeanPassVariance());
-      s.replicates.seconds.push_back(run.seconds[rep] / per_replicate);
-    }
+    s.replicates = run.Summary(per_replicate);
     s.variance = PooledVariance(s.replicates);
     s.seconds = PooledSeconds(s.replicates);
     s.efficiency = Efficiency(s.replicates);
