@@ -25,6 +25,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
 
 STYLE = {
     "equiangular": ("tab:gray", "o"),
@@ -97,6 +98,9 @@ def plot_efficiency(results, folder):
             ax.errorbar(xs, ys, yerr=[lo, hi], fmt=marker, color=colour, label=name, ms=4, capsize=2, lw=1)
         ax.axhline(1, color="black", lw=0.6)
         ax.set_yscale("log")
+        ax.yaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+        ax.yaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
+        ax.tick_params(axis="y", which="minor", labelsize=7)
         ax.set_xticks(range(len(gs)))
         ax.set_xticklabels([f"g = {g:g}" for g in gs], fontsize=8)
         ax.set_ylabel("efficiency / Novak's (95% interval)")
