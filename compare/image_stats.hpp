@@ -1,6 +1,7 @@
 #pragma once
-// Per-pixel running sums of passes: the mean image, and the variance of that mean (for the
-// reference, whose own noise is subtracted from every method's squared error).
+// Per-pixel running sums of passes: the mean image, the per-pass variance of every pixel
+// (estimated from the passes themselves) and the variance of the mean.
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -8,26 +9,24 @@
 
 namespace vrl_compare {
 
+// A pass as RGB doubles, pixel by pixel.
+std::vector<double> FromFilm(const vrli::Film& film);
+vrli::Film ToFilm(const std::vector<double>& rgb, int width, int height);
+
 class PassStatistics {
  public:
-  PassStatistics(int width, int height)
-      : width_(width), height_(height), sum_(Size()), sum_sq_(Size()) {}
+  explicit PassStatistics(std::size_t values = 0) : sum_(values), sum_sq_(values) {}
 
-  void Add(const vrli::Film& pass) {
-    for (std::size_t i = 0; i < pass.pixels.size(); ++i) {
-      const vrli::Spectrum& s = pass.pixels[i];
-      for (int c = 0; c < 3; ++c) {
-        double v = c == 0 ? s.r : c == 1 ? s.g : s.b;
-        sum_[3 * i + c] += v;
-        sum_sq_[3 * i + c] += v * v;
-      }
+  void Add(const std::vector<double>& pass) {
+    for (std::size_t i = 0; i < pass.size(); ++i) {
+      sum_[i] += pass[i];
+      sum_sq_[i] += pass[i] * pass[i];
     }
     ++passes_;
   }
+  void Add(const vrli::Film& pass) { Add(FromFilm(pass)); }
 
   int passes() const { return passes_; }
-  int width() const { return width_; }
-  int height() const { return height_; }
 
   std::vector<double> Mean() const {
     std::vector<double> m(sum_.size());
@@ -35,26 +34,34 @@ class PassStatistics {
     return m;
   }
 
-  // Unbiased variance of the mean, per pixel and channel.
-  std::vector<double> VarianceOfMean() const {
+  // Unbiased variance of one pass, per pixel and channel.
+  std::vector<double> PassVariance() const {
     std::vector<double> v(sum_.size());
     if (passes_ < 2) return v;
     for (std::size_t i = 0; i < v.size(); ++i) {
       double mean = sum_[i] / passes_;
-      v[i] = (sum_sq_[i] / passes_ - mean * mean) * passes_ / (passes_ - 1.0) / passes_;
-      if (v[i] < 0) v[i] = 0;
+      v[i] = std::max((sum_sq_[i] - passes_ * mean * mean) / (passes_ - 1.0), 0.0);
     }
     return v;
   }
 
+  // The per-pass variance averaged over pixels and channels: the image's noise per pass.
+  double MeanPassVariance() const {
+    std::vector<double> v = PassVariance();
+    double sum = 0;
+    for (double x : v) sum += x;
+    return v.empty() ? 0 : sum / static_cast<double>(v.size());
+  }
+
+  std::vector<double> VarianceOfMean() const {
+    std::vector<double> v = PassVariance();
+    for (double& x : v) x /= passes_;
+    return v;
+  }
+
  private:
-  std::size_t Size() const { return 3 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_); }
-  int width_, height_;
   std::vector<double> sum_, sum_sq_;
   int passes_ = 0;
 };
-
-vrli::Film ToFilm(const std::vector<double>& rgb, int width, int height);
-std::vector<double> FromFilm(const vrli::Film& film);
 
 }  // namespace vrl_compare

@@ -1,11 +1,15 @@
-// vrl_compare: renders each scene and g with every camera sampler for the same wall-clock
-// budget, interleaved, and scores the images against converged references. Writes, under
-// --out: one folder per study (error curve CSV, equal-time images, result JSON) and a
-// summary table (Markdown and JSON), which it also prints.
+// vrl_compare: the equal-time study of the camera samplers. For every scene and g, every
+// sampler renders the same passes in independent replicates; the output is the efficiency
+// of each (1 / (per-pass variance x seconds per pass)) relative to Novák's with a 95%
+// interval, a verdict that says "best" only when the interval separates the winner from the
+// runner-up, and the error against a mixture reference. With --decompose: where each
+// scene's noise lives instead. Writes under --out (one folder per study, summary.md and
+// summary.json; or decompose/<scene>.json) and prints the table. Every argument is checked
+// before anything is written.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,13 +18,16 @@
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
+#include "decompose.hpp"
 #include <vrlis_scenes/image_io.hpp>
-
 #include "image_stats.hpp"
+#include <vrlis_scenes/scenes.hpp>
 #include "study.hpp"
 
 namespace {
 
+using vrl_compare::DecomposeResult;
+using vrl_compare::SamplerName;
 using vrl_compare::StudyConfig;
 using vrl_compare::StudyResult;
 
@@ -35,77 +42,120 @@ std::string StudyName(const StudyConfig& c) {
   return s.str();
 }
 
-void WriteStudy(const StudyResult& r) {
+nlohmann::json ToJson(const vrl_compare::RatioInterval& r) {
+  return {{"point", r.point}, {"low", r.low}, {"high", r.high}};
+}
+nlohmann::json ToJson(const vrl_compare::Estimate& e) { return {{"value", e.value}, {"se", e.standard_error}}; }
+
+bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error) {
   const StudyConfig& c = r.config;
-  std::filesystem::create_directories(c.out_dir);
-  std::ostringstream csv;
-  csv << "method,seconds,passes,rmse\n";
-  nlohmann::json methods = nlohmann::json::array();
+  std::filesystem::create_directories(dir);
+  nlohmann::json samplers = nlohmann::json::array();
   vrli::Film reference = vrl_compare::ToFilm(r.reference_image, c.width, c.height);
   float exposure = vrl_render::AutoExposure(reference);
-  std::string error;
-  for (const auto& m : r.methods) {
-    for (const auto& p : m.curve) csv << vrlis::Name(m.method) << "," << p.seconds << "," << p.passes << "," << p.rmse << "\n";
-    const auto& last = m.curve.back();
-    methods.push_back({{"method", vrlis::Name(m.method)}, {"passes", last.passes}, {"seconds", last.seconds},
-                       {"rmse_at_budget", m.rmse_at_budget}});
-    vrl_render::WritePng(c.out_dir + "/" + std::string(vrlis::Name(m.method)) + ".png",
-                         vrl_compare::ToFilm(m.image, c.width, c.height), exposure, &error);
+  for (const auto& s : r.samplers) {
+    samplers.push_back({{"sampler", SamplerName(s.sampler)}, {"passes", s.passes}, {"seconds_per_pass", s.seconds},
+                        {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_novak", ToJson(s.to_baseline)},
+                        {"error_to_noise", s.error_to_noise}, {"verdict", s.verdict},
+                        {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}}});
+    if (!vrl_render::WritePng(dir + "/" + SamplerName(s.sampler) + ".png",
+                              vrl_compare::ToFilm(s.image, c.width, c.height), exposure, error))
+      return false;
   }
-  vrl_render::WritePng(c.out_dir + "/reference.png", reference, exposure, &error);
-  vrl_render::WriteText(c.out_dir + "/curve.csv", csv.str(), &error);
+  nlohmann::json mixture = nlohmann::json::array();
+  for (auto s : c.samplers) mixture.push_back(SamplerName(s));
   nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
-                      {"budget", c.budget}, {"methods", methods},
-                      {"reference", {{"method", vrlis::Name(c.reference_method)}, {"passes", r.reference_passes},
+                      {"budget", c.budget}, {"replicates", c.replicates}, {"seed", c.seed},
+                      {"passes_per_replicate", r.passes_per_replicate}, {"verdict", r.verdict},
+                      {"top_vs_runner_up", ToJson(r.top_vs_runner_up)}, {"resolution", r.resolution},
+                      {"sampler_noise", r.sampler_noise}, {"samplers", samplers},
+                      {"reference", {{"mixture", mixture}, {"passes", r.reference_passes},
                                      {"seconds", r.reference_seconds}, {"cached", r.reference_cached},
-                                     {"noise_rmse", r.reference_noise_rmse}}}};
-  vrl_render::WriteText(c.out_dir + "/result.json", j.dump(2) + "\n", &error);
+                                     {"noise", r.reference_noise}}}};
+  return vrl_render::WritePng(dir + "/reference.png", reference, exposure, error) &&
+         vrl_render::WriteText(dir + "/result.json", j.dump(2) + "\n", error);
 }
 
-// One row per study and method: RMSE at the budget, MSE relative to Novak's, the winner.
+std::string Interval(const vrl_compare::RatioInterval& r) {
+  char s[96];
+  std::snprintf(s, sizeof s, "%.2f (%.2f-%.2f)", r.point, r.low, r.high);
+  return s;
+}
+
+// One row per study and sampler.
 std::string SummaryTable(const std::vector<StudyResult>& results) {
   std::ostringstream t;
-  t << "| scene | g | method | passes | RMSE at budget | MSE / MSE Novak | |\n|---|---|---|---|---|---|---|\n";
-  for (const auto& r : results) {
-    double novak = 0, best = 1e300;
-    for (const auto& m : r.methods) {
-      if (m.method == vrlis::CameraSamplers::Of<vrlis::NovakEntry>()) novak = m.rmse_at_budget;
-      best = std::min(best, m.rmse_at_budget);
-    }
-    for (const auto& m : r.methods) {
-      char line[256];
-      double ratio = novak > 0 ? (m.rmse_at_budget * m.rmse_at_budget) / (novak * novak) : 0;
-      std::snprintf(line, sizeof line, "| %s | %g | %s | %d | %.4g | %.3f | %s |\n", r.config.scene.c_str(), r.config.g,
-                    std::string(vrlis::Name(m.method)).c_str(), m.curve.back().passes, m.rmse_at_budget, ratio,
-                    m.rmse_at_budget == best ? "best" : "");
+  t << "| scene | g | sampler | passes | ms / pass | variance / pass | efficiency / Novak (95% interval) "
+       "| error² / noise² | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : results)
+    for (const auto& s : r.samplers) {
+      char line[384];
+      std::snprintf(line, sizeof line, "| %s | %g | %s | %d | %.3g | %.3g | %s | %.2f | %s |\n", r.config.scene.c_str(),
+                    r.config.g, SamplerName(s.sampler).c_str(), s.passes, 1000 * s.seconds, s.variance,
+                    Interval(s.to_baseline).c_str(), s.error_to_noise, s.verdict.c_str());
       t << line;
     }
-  }
   return t.str();
+}
+
+// What the run could tell apart, in words.
+std::string Resolution(const StudyResult& r) {
+  char s[320];
+  std::snprintf(s, sizeof s,
+                "%s: %d passes per sampler (%d replicates of %d); efficiency ratios resolved to x%.2f "
+                "(median 95%% half-width); %s, most efficient over the next %s\n",
+                StudyName(r.config).c_str(), r.samplers.front().passes, r.config.replicates, r.passes_per_replicate,
+                r.resolution, r.verdict.c_str(), Interval(r.top_vs_runner_up).c_str());
+  return s;
+}
+
+nlohmann::json DecompositionJson(const DecomposeResult& d) {
+  nlohmann::json parts = nlohmann::json::array(), gathers = nlohmann::json::array();
+  for (const auto& p : d.parts)
+    parts.push_back({{"part", p.name}, {"variance", ToJson(p.variance)}, {"seconds_per_pass", p.seconds}});
+  for (const auto& s : d.gathers) gathers.push_back({{"sampler", SamplerName(s.sampler)}, {"variance", ToJson(s.variance)}, {"step_two", ToJson(s.step_two)}});
+  return {{"scene", d.config.scene}, {"g", d.g}, {"width", d.config.width}, {"height", d.config.height},
+          {"vrls", d.config.vrls}, {"sampler", SamplerName(d.config.sampler)}, {"passes", d.passes},
+          {"parts", parts}, {"total_variance", ToJson(d.total_variance)}, {"total_seconds", d.total_seconds},
+          {"base_seconds", d.base_seconds},
+          {"steps", {{"pixels", d.step_pixels}, {"max_pixels", d.config.max_pixels}, {"passes", d.step_passes},
+                     {"paths_and_pixel_variance", ToJson(d.paths_and_pixel_variance)},
+                     {"step_one", ToJson(d.step_one)}, {"gathers", gathers}}}};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Equal-time comparison of the vrlis camera samplers on the seed's scenes."};
+  CLI::App app{"Equal-time study of the vrlis camera samplers on the four scenes, with confidence intervals."};
   std::vector<std::string> scenes = {"bidirectional", "room"};
   std::vector<float> gs = {-0.9f, 0.5f, 0.9f};
-  std::vector<std::string> samplers;
-  bool full = false;
+  std::vector<std::string> sampler_names;
+  bool full = false, decompose = false;
   StudyConfig base;
-  double reference_factor = 6;
+  double reference_factor = 2, decompose_seconds = 20, step_seconds = 15;
   int threads = 2;
   std::string out = "out/compare";
-  app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, 4x the budget, 96x96");
+  app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, budget 12 s (the published run)");
+  app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
-  app.add_option("--samplers", samplers, "Camera samplers (default: all the library offers)")->delimiter(',');
-  app.add_option("--budget", base.budget, "Wall-clock seconds per sampler and study")->capture_default_str();
-  app.add_option("--reference-factor", reference_factor, "Reference time as a multiple of the budget")->capture_default_str();
+  app.add_option("--samplers", sampler_names, "Camera samplers, novak among them (default: all)")->delimiter(',');
+  app.add_option("--budget", base.budget, "Seconds of passes per sampler and study, at least")->capture_default_str();
+  app.add_option("--replicates", base.replicates, "Independent replicates per study (>= 3)")->capture_default_str();
+  app.add_option("--margin", base.margin, "\"best\" needs the 95% interval over the runner-up above this (>= 1)")
+      ->capture_default_str();
+  app.add_option("--extension", base.extension, "Undecided studies go on up to this multiple of the budget (>= 1)")
+      ->capture_default_str();
+  app.add_option("--reference-factor", reference_factor, "Reference time (all samplers mixed) over the budget")
+      ->capture_default_str();
+  app.add_option("--decompose-seconds", decompose_seconds, "--decompose: seconds for the parts, per scene")
+      ->capture_default_str();
+  app.add_option("--step-seconds", step_seconds, "--decompose: seconds for step one versus two, per scene")
+      ->capture_default_str();
   app.add_option("--width", base.width, "Image width")->capture_default_str();
   app.add_option("--height", base.height, "Image height")->capture_default_str();
   app.add_option("--vrls", base.vrls, "Light paths per pass")->capture_default_str();
-  app.add_option("--seed", base.seed, "Seed (each sampler derives its own)")->capture_default_str();
+  app.add_option("--seed", base.seed, "Seed of the replicates (the reference has its own)")->capture_default_str();
   app.add_option("--threads", threads, "Worker threads, the same for every sampler")->capture_default_str();
   app.add_option("--out", out, "Output folder")->capture_default_str();
   try {
@@ -114,55 +164,108 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (full) {
-    if (app.count("--scenes") == 0) scenes = {"bidirectional", "room", "cube", "corner"};
+    if (app.count("--scenes") == 0) scenes.assign(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end());
     if (app.count("--g") == 0) gs = {-0.9f, -0.5f, 0.f, 0.5f, 0.9f};
-    if (app.count("--budget") == 0) base.budget *= 4;
-    if (app.count("--width") == 0) base.width = 96;
-    if (app.count("--height") == 0) base.height = 96;
+    if (app.count("--budget") == 0) base.budget = 12;
   }
+  if (decompose && app.count("--scenes") == 0)
+    scenes.assign(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end());
+
+  // Every argument is checked here, before anything is written.
+  for (const std::string& s : scenes)
+    if (std::find(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end(), s) == vrl_render::kSceneNames.end())
+      return Fail("unknown scene '" + s + "' (bidirectional, room, cube, corner)");
+  if (scenes.empty() || gs.empty()) return Fail("--scenes and --g need at least one value");
   for (float g : gs)
     if (!(g > -1 && g < 1)) return Fail("--g values must lie in (-1, 1)");
-  if (!(base.budget > 0) || !(reference_factor >= 1)) return Fail("--budget must be > 0 and --reference-factor >= 1");
-  if (base.width <= 0 || base.height <= 0 || base.vrls <= 0 || threads <= 0)
-    return Fail("--width, --height, --vrls and --threads must be positive");
-  if (samplers.empty())
-    for (vrlis::Method m : vrlis::kMethods) base.methods.push_back(m);
-  for (const std::string& s : samplers) {
-    auto m = vrlis::ParseMethod(s);
+  if (!(base.budget > 0) || !(base.budget < 1e6)) return Fail("--budget must be a positive number of seconds");
+  if (!(reference_factor > 0) || !(reference_factor < 1e3)) return Fail("--reference-factor must be in (0, 1000)");
+  if (!(decompose_seconds > 0) || !(step_seconds > 0) || decompose_seconds > 1e6 || step_seconds > 1e6)
+    return Fail("--decompose-seconds and --step-seconds must be positive");
+  if (!(base.extension >= 1) || !(base.extension < 100)) return Fail("--extension must be in [1, 100)");
+  if (!(base.margin >= 1) || !(base.margin < 100)) return Fail("--margin must be in [1, 100)");
+  if (base.replicates < 3 || base.replicates > 1000) return Fail("--replicates must be in [3, 1000]");
+  if (base.width <= 0 || base.height <= 0 || base.width > 8192 || base.height > 8192)
+    return Fail("--width and --height must be in [1, 8192]");
+  if (base.vrls <= 0 || threads <= 0) return Fail("--vrls and --threads must be positive");
+  if (sampler_names.empty())
+    base.samplers = vrl_compare::AllSamplers();
+  for (const std::string& s : sampler_names) {
+    auto m = vrl_compare::ParseSampler(s);
     if (!m) return Fail("unknown sampler '" + s + "'");
-    base.methods.push_back(*m);
+    if (std::find(base.samplers.begin(), base.samplers.end(), *m) != base.samplers.end())
+      return Fail("sampler '" + s + "' given twice");
+    base.samplers.push_back(*m);
   }
-  if (!vrl_render::CanWrite(out + "/.probe")) {
+  if (std::find(base.samplers.begin(), base.samplers.end(), vrl_compare::kBaseline) == base.samplers.end() ||
+      base.samplers.size() < 2)
+    return Fail("--samplers must name novak (every ratio is to it) and at least one other");
+  if (std::set<float>(gs.begin(), gs.end()).size() != gs.size() ||
+      std::set<std::string>(scenes.begin(), scenes.end()).size() != scenes.size())
+    return Fail("--scenes and --g must not repeat a value");
+  {
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
     if (ec || !vrl_render::CanWrite(out + "/.probe")) return Fail("cannot write to output folder '" + out + "'");
   }
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  std::string error;
+
+  if (decompose) {
+    nlohmann::json index = nlohmann::json::array();
+    std::filesystem::create_directories(out + "/decompose");
+    try {
+      for (const std::string& scene : scenes) {
+        vrl_compare::DecomposeConfig c;
+        c.scene = scene;
+        c.width = base.width;
+        c.height = base.height;
+        c.vrls = base.vrls;
+        c.samplers = base.samplers;
+        c.budget = decompose_seconds;
+        c.step_budget = step_seconds;
+        c.seed = base.seed;
+        std::fprintf(stderr, "%s: decomposing (%.3g s parts, %.3g s steps) ...\n", scene.c_str(), c.budget,
+                     c.step_budget);
+        nlohmann::json j = DecompositionJson(vrl_compare::Decompose(c));
+        if (!vrl_render::WriteText(out + "/decompose/" + scene + ".json", j.dump(2) + "\n", &error)) return Fail(error);
+        std::printf("%s\n", j.dump().c_str());
+        index.push_back(scene);
+      }
+    } catch (const std::exception& e) {
+      return Fail(e.what());
+    }
+    if (!vrl_render::WriteText(out + "/decompose/scenes.json", index.dump(2) + "\n", &error)) return Fail(error);
+    return 0;
+  }
+
   base.reference_seconds = reference_factor * base.budget;
   base.reference_dir = out + "/references";
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-
   std::vector<StudyResult> results;
+  std::string resolution;
   try {
     for (const std::string& scene : scenes)
       for (float g : gs) {
         StudyConfig c = base;
         c.scene = scene;
         c.g = g;
-        c.out_dir = out + "/" + StudyName(c);
-        std::fprintf(stderr, "%s: %zu samplers x %.3g s, reference %.3g s ...\n", StudyName(c).c_str(), c.methods.size(),
-                     c.budget, c.reference_seconds);
+        std::fprintf(stderr, "%s: %zu samplers x >= %.3g s in %d replicates, reference %.3g s ...\n",
+                     StudyName(c).c_str(), c.samplers.size(), c.budget, c.replicates, c.reference_seconds);
         results.push_back(vrl_compare::RunStudy(c));
-        WriteStudy(results.back());
+        if (!WriteStudy(results.back(), out + "/" + StudyName(c), &error)) return Fail(error);
+        resolution += Resolution(results.back());
+        std::fprintf(stderr, "%s", Resolution(results.back()).c_str());
       }
   } catch (const std::exception& e) {
     return Fail(e.what());
   }
   std::string table = SummaryTable(results);
-  std::string error;
-  vrl_render::WriteText(out + "/summary.md", table, &error);
   nlohmann::json all = nlohmann::json::array();
   for (const auto& r : results) all.push_back(StudyName(r.config));
-  vrl_render::WriteText(out + "/studies.json", all.dump(2) + "\n", &error);
-  std::printf("%s", table.c_str());
+  if (!vrl_render::WriteText(out + "/summary.md", table, &error) ||
+      !vrl_render::WriteText(out + "/resolution.txt", resolution, &error) ||
+      !vrl_render::WriteText(out + "/studies.json", all.dump(2) + "\n", &error))
+    return Fail(error);
+  std::printf("%s\n%s", table.c_str(), resolution.c_str());
   return 0;
 }

@@ -1,10 +1,17 @@
 #!/usr/bin/python3
-"""Charts for vrl_compare's output: for every study, RMSE against wall time (log-log, one line
-per sampler) and an equal-time image strip with each sampler's RMSE under its image.
-With --publish DIR, also copies the charts and the summary table into DIR and writes
-DIR/README.md stating the date, the machine and the command."""
+"""Charts and pages for vrl_compare's output.
+
+Study mode (default): an efficiency chart (efficiency / Novak's with 95% intervals, one
+panel per scene) and, per study, an image strip (the reference and every sampler after the
+same passes). With --publish DIR, also copies them into DIR, writes DIR/results.md (date,
+machine, command, table, what each study resolved) and the summary block of README.md.
+
+Decompose mode (--decompose): per scene, a stacked bar chart of the shares of per-pass
+variance and of time per part of transport, and of the medium-to-medium gather's variance
+between the light paths and pixel, step one and step two; with --publish DIR, writes
+DIR/decomposition.md with the tables and, per scene, which term a better sampler would
+have to improve."""
 import argparse
-import csv
 import datetime
 import json
 import os
@@ -18,6 +25,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
 
 STYLE = {
     "equiangular": ("tab:gray", "o"),
@@ -26,50 +34,22 @@ STYLE = {
     "cauchy-mixture": ("tab:red", "v"),
     "full-product": ("tab:green", "D"),
 }
+PART_COLOURS = {
+    "medium-to-medium": "tab:blue",
+    "medium-to-surface": "tab:orange",
+    "single scattering": "tab:purple",
+    "direct": "tab:olive",
+    "remainder": "tab:gray",
+    "light paths, camera rays": "lightgray",
+    "light paths and pixel": "lightsteelblue",
+    "step one (VRL point)": "tab:cyan",
+    "step two (camera sampler)": "midnightblue",
+}
 
 
-def read_curves(study_dir):
-    curves = {}
-    with open(os.path.join(study_dir, "curve.csv")) as f:
-        for row in csv.DictReader(f):
-            c = curves.setdefault(row["method"], ([], []))
-            c[0].append(float(row["seconds"]) * 1000)
-            c[1].append(float(row["rmse"]))
-    return curves
-
-
-def plot_curves(study_dir, result, name):
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    for method, (ms, rmse) in read_curves(study_dir).items():
-        color, marker = STYLE.get(method, ("black", "x"))
-        ax.loglog(ms, [max(r, 1e-12) for r in rmse], color=color, label=method, marker=marker, markevery=0.2, ms=4)
-    ax.set_xlabel("wall time per sampler (ms)")
-    ax.set_ylabel("RMSE (reference noise subtracted)")
-    ax.set_title(f"{result['scene']}, g = {result['g']:g}, {result['width']}x{result['height']}")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(study_dir, f"{name}_rmse.{ext}"), dpi=120)
-    plt.close(fig)
-
-
-def plot_strip(study_dir, result, name):
-    methods = result["methods"]
-    fig, axes = plt.subplots(1, len(methods) + 1, figsize=(2 * (len(methods) + 1), 2.5))
-    panels = [("reference", "reference.png", "")] + [
-        (m["method"], m["method"] + ".png", f"RMSE {m['rmse_at_budget']:.3g}") for m in methods
-    ]
-    for ax, (title, image, caption) in zip(axes, panels):
-        ax.imshow(mpimg.imread(os.path.join(study_dir, image)), interpolation="nearest")
-        ax.set_title(title, fontsize=8)
-        ax.set_xlabel(caption, fontsize=8)
-        ax.set_xticks([])
-        ax.set_yticks([])
-    fig.suptitle(f"{result['scene']}, g = {result['g']:g}: equal time, {result['budget']:g} s each", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(os.path.join(study_dir, f"{name}_strip.png"), dpi=120)
-    plt.close(fig)
+def load(path):
+    with open(path) as f:
+        return json.load(f)
 
 
 def machine():
@@ -81,45 +61,112 @@ def machine():
     return f"{model}, {os.cpu_count()} cores, {platform.system()} {platform.release()}"
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("out", help="vrl_compare's output folder")
-    parser.add_argument("--publish", help="folder to copy the charts and summary into")
-    parser.add_argument("--command", default="tools/main.sh", help="the command that produced the output")
-    args = parser.parse_args()
-    with open(os.path.join(args.out, "studies.json")) as f:
-        studies = json.load(f)
-    for name in studies:
-        study_dir = os.path.join(args.out, name)
-        with open(os.path.join(study_dir, "result.json")) as f:
-            result = json.load(f)
-        plot_curves(study_dir, result, name)
-        plot_strip(study_dir, result, name)
-    if not args.publish:
-        return 0
-    os.makedirs(args.publish, exist_ok=True)
+def provenance(command):
+    return f"Generated {datetime.date.today().isoformat()} on {machine()} by `{command}`."
+
+
+def save(fig, folder, name, svg=True):
+    fig.tight_layout()
+    for ext in ("png", "svg") if svg else ("png",):
+        fig.savefig(os.path.join(folder, f"{name}.{ext}"), dpi=120)
+    plt.close(fig)
+
+
+# ---------------------------------------------------------------- the equal-time study
+
+
+def plot_efficiency(results, folder):
+    """One panel per scene: efficiency / Novak's against g, one offset column per sampler."""
+    scenes = list(dict.fromkeys(r["scene"] for r in results))
+    fig, axes = plt.subplots(1, len(scenes), figsize=(4.6 * len(scenes), 3.8), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        studies = [r for r in results if r["scene"] == scene]
+        gs = [r["g"] for r in studies]
+        samplers = [s["sampler"] for s in studies[0]["samplers"]]
+        for k, name in enumerate(samplers):
+            colour, marker = STYLE.get(name, ("black", "x"))
+            xs, ys, lo, hi = [], [], [], []
+            for i, r in enumerate(studies):
+                s = next(s for s in r["samplers"] if s["sampler"] == name)
+                ratio = s["to_novak"]
+                xs.append(i + (k - (len(samplers) - 1) / 2) * 0.13)
+                ys.append(ratio["point"])
+                lo.append(ratio["point"] - ratio["low"])
+                hi.append(min(ratio["high"], 1e6) - ratio["point"])
+                if s["verdict"] == "best":
+                    ax.annotate("best", (xs[-1], ratio["high"]), fontsize=7, ha="center", va="bottom")
+            ax.errorbar(xs, ys, yerr=[lo, hi], fmt=marker, color=colour, label=name, ms=4, capsize=2, lw=1)
+        ax.axhline(1, color="black", lw=0.6)
+        ax.set_yscale("log")
+        ax.yaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+        ax.yaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
+        ax.tick_params(axis="y", which="minor", labelsize=7)
+        ax.set_xticks(range(len(gs)))
+        ax.set_xticklabels([f"g = {g:g}" for g in gs], fontsize=8)
+        ax.set_ylabel("efficiency / Novak's (95% interval)")
+        ax.set_title(scene)
+        ax.grid(True, which="both", axis="y", alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    save(fig, folder, "efficiency")
+
+
+def plot_strip(study_dir, result, name):
+    samplers = result["samplers"]
+    fig, axes = plt.subplots(1, len(samplers) + 1, figsize=(2 * (len(samplers) + 1), 2.5))
+    panels = [("reference (mixture)", "reference.png", f"{result['reference']['passes']} passes")]
+    panels += [(s["sampler"], s["sampler"] + ".png", f"x{s['to_novak']['point']:.2f} Novak") for s in samplers]
+    for ax, (title, image, caption) in zip(axes, panels):
+        ax.imshow(mpimg.imread(os.path.join(study_dir, image)), interpolation="nearest")
+        ax.set_title(title, fontsize=8)
+        ax.set_xlabel(caption, fontsize=8)
+        ax.set_xticks([])
+        ax.set_yticks([])
+    passes = samplers[0]["passes"]
+    fig.suptitle(f"{result['scene']}, g = {result['g']:g}: {passes} passes each (efficiency under each)", fontsize=9)
+    save(fig, study_dir, f"{name}_strip", svg=False)
+
+
+def publish_study(out, names, results, folder, command):
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(out, "efficiency.png"), folder)
+    shutil.copy(os.path.join(out, "efficiency.svg"), folder)
+    with open(os.path.join(out, "summary.md")) as f:
+        table = f.read()
+    with open(os.path.join(out, "resolution.txt")) as f:
+        resolution = f.read()
+    r0 = results[0]
     lines = [
-        "# Equal-time comparison",
+        "# Equal-time study: results",
         "",
-        f"Generated {datetime.date.today().isoformat()} on {machine()} by `{args.command}`.",
+        provenance(command),
+        "",
+        f"{r0['width']}x{r0['height']} pixels, {r0['vrls']} light paths per pass, {r0['replicates']} replicates "
+        f"per study, at least {r0['budget']:g} s of passes per sampler; seed {r0['seed']}. How the numbers are "
+        "made and how to read them: [README.md](README.md).",
+        "",
+        "![efficiency](efficiency.png)",
+        "",
+        table,
+        "What each study could resolve:",
+        "",
+        "```",
+        resolution.rstrip(),
+        "```",
+        "",
+        "## Images after the same passes",
         "",
     ]
-    for name in studies:
-        study_dir = os.path.join(args.out, name)
-        for suffix in ("_rmse.png", "_rmse.svg", "_strip.png"):
-            shutil.copy(os.path.join(study_dir, name + suffix), args.publish)
-        lines += [f"## {name}", "", f"![{name} RMSE]({name}_rmse.png) ![{name} strip]({name}_strip.png)", ""]
-    with open(os.path.join(args.out, "summary.md")) as f:
-        lines += ["## Summary", "", f.read()]
-    with open(os.path.join(args.publish, "README.md"), "w") as f:
+    for name in names:
+        shutil.copy(os.path.join(out, name, name + "_strip.png"), folder)
+        lines += [f"![{name}]({name}_strip.png)", ""]
+    with open(os.path.join(folder, "results.md"), "w") as f:
         f.write("\n".join(lines))
-    update_readme(lines[2], os.path.join(args.out, "summary.md"))
-    return 0
+    update_readme(provenance(command), table)
 
 
-def update_readme(provenance, summary_path, readme="README.md"):
+def update_readme(provenance_line, table, readme="README.md"):
     """Replaces the block between the compare-summary markers of the project README with the
-    summary table just measured, so the README never quotes a table no command made."""
+    table just measured, so the README never quotes a table no command made."""
     begin, end = "<!-- compare-summary -->", "<!-- /compare-summary -->"
     if not os.path.exists(readme):
         return
@@ -127,12 +174,201 @@ def update_readme(provenance, summary_path, readme="README.md"):
         text = f.read()
     if begin not in text or end not in text:
         return
-    with open(summary_path) as f:
-        table = f.read()
-    block = f"{begin}\n{provenance}\n\n{table}{end}"
+    block = f"{begin}\n{provenance_line}\n\n{table}{end}"
     text = text[: text.index(begin)] + block + text[text.index(end) + len(end):]
     with open(readme, "w") as f:
         f.write(text)
+
+
+def study_main(args):
+    names = load(os.path.join(args.out, "studies.json"))
+    results = [load(os.path.join(args.out, name, "result.json")) for name in names]
+    plot_efficiency(results, args.out)
+    for name, result in zip(names, results):
+        plot_strip(os.path.join(args.out, name), result, name)
+    if args.publish:
+        publish_study(args.out, names, results, args.publish, args.command)
+
+
+# ---------------------------------------------------------------- the noise decomposition
+
+
+def shares(d):
+    """Per scene: variance and time shares of the parts, and the gather's step split."""
+    parts = d["parts"]
+    var = {p["part"]: max(p["variance"]["value"], 0.0) for p in parts}
+    time = {"light paths, camera rays": max(d["base_seconds"], 0.0)}
+    time.update({p["part"]: max(p["seconds_per_pass"], 0.0) for p in parts})
+    steps = d["steps"]
+    gather = next((g for g in steps["gathers"] if g["sampler"] == d["sampler"]), None)
+    split = {}
+    if gather and gather["variance"]["value"] > 0:
+        full = gather["variance"]["value"]
+        split = {
+            "light paths and pixel": max(steps["paths_and_pixel_variance"]["value"], 0.0) / full,
+            "step one (VRL point)": max(steps["step_one"]["value"], 0.0) / full,
+            "step two (camera sampler)": max(gather["step_two"]["value"], 0.0) / full,
+        }
+    return var, time, split
+
+
+def plot_decomposition(d, folder):
+    var, time, split = shares(d)
+    bars = [("per-pass variance", var), ("time per pass", time)]
+    if split:
+        bars.append((f"m2m gather variance\n({d['sampler']}, {d['steps']['pixels']} pixels)", split))
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    seen = set()
+    for i, (label, values) in enumerate(bars):
+        total = sum(values.values()) or 1
+        bottom = 0
+        for part, value in values.items():
+            share = value / total
+            ax.bar(i, share, bottom=bottom, color=PART_COLOURS.get(part, "black"), width=0.6,
+                   label=part if part not in seen else None, edgecolor="white", lw=0.5)
+            if share > 0.06:
+                ax.text(i, bottom + share / 2, f"{100 * share:.0f}%", ha="center", va="center", fontsize=7)
+            seen.add(part)
+            bottom += share
+    ax.set_xticks(range(len(bars)))
+    ax.set_xticklabels([b[0] for b in bars], fontsize=8)
+    ax.set_ylabel("share")
+    ax.set_ylim(0, 1)
+    ax.set_title(f"{d['scene']}, g = {d['g']:g}: where the noise and the time go ({d['sampler']})", fontsize=9)
+    ax.legend(fontsize=7, bbox_to_anchor=(1.02, 1), loc="upper left")
+    save(fig, folder, f"decompose_{d['scene']}")
+
+
+def pct(x):
+    return f"{100 * x:.1f}%" if x >= 0.001 else "<0.1%"
+
+
+def signed_pct(x):
+    return f"{100 * x:.1f}%"
+
+
+def decomposition_page(decs, command):
+    lines = [
+        "# Where the noise lives",
+        "",
+        provenance(command),
+        "",
+        "Per scene (its default `g`), the image's per-pass variance (mean over pixels and channels, from the "
+        "passes themselves, +- one standard error from the spread of 8 independent batches) and the time per "
+        "pass of each part of light transport, every part rendered alone with the same seeds; the "
+        "single-scattering part is the difference of the direct renders with and without it. Then, inside the "
+        "medium-to-medium gather on a subset of pixels (the first camera segment, rays jittered as rendered): "
+        "its variance as rendered, with step two replaced by quadrature (the midpoint rule on FullProduct's "
+        "warp of the camera segment), and with both steps by quadrature; by the law of total variance the "
+        "differences are what step two and step one add. How this is measured and what follows from it: "
+        "[README.md](README.md).",
+        "",
+    ]
+    for d in decs:
+        var, time, split = shares(d)
+        total_var = d["total_variance"]["value"]
+        part_sum = sum(var.values())
+        time_sum = sum(time.values())
+        lines += [f"## {d['scene']} (g = {d['g']:g})", "", f"![{d['scene']}](decompose_{d['scene']}.png)", ""]
+        lines += ["| part | variance per pass | share | ms per pass | share |", "|---|---|---|---|---|"]
+        for p in d["parts"]:
+            v = p["variance"]
+            lines.append(
+                f"| {p['part']} | {v['value']:.3g} +- {v['se']:.2g} | {pct(var[p['part']] / part_sum) if part_sum else '-'} "
+                f"| {1000 * p['seconds_per_pass']:.3g} | {pct(time[p['part']] / time_sum)} |"
+            )
+        lines.append(
+            f"| light paths, camera rays | | | {1000 * d['base_seconds']:.3g} | {pct(time['light paths, camera rays'] / time_sum)} |"
+        )
+        lines.append(
+            f"| whole image | {total_var:.3g} +- {d['total_variance']['se']:.2g} | parts' covariance "
+            f"{total_var - part_sum:+.2g} | {1000 * d['total_seconds']:.3g} | |"
+        )
+        lines += ["", f"{d['passes']} passes per part, {d['sampler']} as the camera sampler.", ""]
+        steps = d["steps"]
+        if steps["gathers"] and steps["pixels"] > 0:
+            v0, v1 = steps["paths_and_pixel_variance"], steps["step_one"]
+            lines += [
+                f"Medium-to-medium gather on {steps['pixels']} pixels, {steps['passes']} passes (variances per pass, "
+                "+- one standard error; the shares are of each sampler's gather variance):",
+                "",
+                "| camera sampler | gather variance | step two adds | share | step one adds | share | light paths and pixel | share |",
+                "|---|---|---|---|---|---|---|---|",
+            ]
+            for g in steps["gathers"]:
+                full, two = g["variance"]["value"], g["step_two"]
+                if full <= 0:
+                    continue
+                lines.append(
+                    f"| {g['sampler']} | {full:.3g} +- {g['variance']['se']:.2g} | {two['value']:.3g} +- {two['se']:.2g} "
+                    f"| {signed_pct(two['value'] / full)} | {v1['value']:.3g} +- {v1['se']:.2g} | {signed_pct(v1['value'] / full)} "
+                    f"| {v0['value']:.3g} +- {v0['se']:.2g} | {signed_pct(v0['value'] / full)} |"
+                )
+            lines.append("")
+        lines += [conclusion(d, var, time, split), ""]
+    return "\n".join(lines)
+
+
+def conclusion(d, var, time, split):
+    """The scene's verdict in words: which term a better sampler would have to improve."""
+    part_sum = sum(var.values()) or 1
+    time_sum = sum(time.values()) or 1
+    whole = d["total_variance"]["value"] or part_sum
+    top = max(var, key=var.get)
+    sampler_parts = ("medium-to-medium", "medium-to-surface", "single scattering")
+    step_two = split.get("step two (camera sampler)", 0.0)
+    reach = var.get("medium-to-medium", 0) * step_two + var.get("medium-to-surface", 0) + var.get("single scattering", 0)
+    gather_time = sum(time.get(p, 0) for p in ("medium-to-medium", "medium-to-surface"))
+    words = (
+        f"**{d['scene']}**: {top} carries {pct(var[top] / part_sum)} of the per-pass variance. "
+        f"The parts the camera sampler touches (the medium-to-medium gather's step two, the medium-to-surface "
+        f"gather, single scattering) hold at most {pct(reach / part_sum)} of it ({pct(reach / whole)} of the whole "
+        f"image's), and the two VRL gathers take "
+        f"{pct(gather_time / time_sum)} of the time. "
+    )
+    if top in sampler_parts and (top != "medium-to-medium" or step_two >= 0.5):
+        words += (
+            f"A better camera sampler changes this image's noise: {top} is the term to improve"
+            + (f" (step two is {pct(step_two)} of the gather's variance)." if top == "medium-to-medium" else ".")
+        )
+    elif top == "medium-to-medium":
+        words += (
+            f"Inside the gather, step one and the light paths hold {pct(1 - step_two)} of its variance: a better "
+            "VRL point (step one) would do more than a better camera sampler."
+        )
+    else:
+        words += (
+            f"No camera sampler can change much of this image's noise ({top} is outside its reach); between "
+            "samplers, the image changes mainly through their cost per gather."
+        )
+    return words
+
+
+def decompose_main(args):
+    folder = os.path.join(args.out, "decompose")
+    decs = [load(os.path.join(folder, f"{scene}.json")) for scene in load(os.path.join(folder, "scenes.json"))]
+    for d in decs:
+        plot_decomposition(d, folder)
+    page = decomposition_page(decs, args.command)
+    with open(os.path.join(folder, "decomposition.md"), "w") as f:
+        f.write(page)
+    if args.publish:
+        os.makedirs(args.publish, exist_ok=True)
+        for d in decs:
+            for ext in ("png", "svg"):
+                shutil.copy(os.path.join(folder, f"decompose_{d['scene']}.{ext}"), args.publish)
+        shutil.copy(os.path.join(folder, "decomposition.md"), args.publish)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("out", help="vrl_compare's output folder")
+    parser.add_argument("--decompose", action="store_true", help="the noise decomposition (vrl_compare --decompose)")
+    parser.add_argument("--publish", help="folder to copy the charts and pages into (docs/compare)")
+    parser.add_argument("--command", default="tools/main.sh", help="the command that produced the output")
+    args = parser.parse_args()
+    (decompose_main if args.decompose else study_main)(args)
+    return 0
 
 
 if __name__ == "__main__":

@@ -1,35 +1,15 @@
-#include <vrlis_scenes/image_io.hpp>
-
 #include "reference.hpp"
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include <vrlis_scenes/image_io.hpp>
 #include "image_stats.hpp"
 
 namespace vrl_compare {
-
-vrli::Film ToFilm(const std::vector<double>& rgb, int width, int height) {
-  vrli::Film film(width, height);
-  for (std::size_t i = 0; i < film.pixels.size(); ++i)
-    film.pixels[i] = {static_cast<float>(rgb[3 * i]), static_cast<float>(rgb[3 * i + 1]),
-                      static_cast<float>(rgb[3 * i + 2])};
-  return film;
-}
-
-std::vector<double> FromFilm(const vrli::Film& film) {
-  std::vector<double> rgb(3 * film.pixels.size());
-  for (std::size_t i = 0; i < film.pixels.size(); ++i) {
-    rgb[3 * i] = film.pixels[i].r;
-    rgb[3 * i + 1] = film.pixels[i].g;
-    rgb[3 * i + 2] = film.pixels[i].b;
-  }
-  return rgb;
-}
 
 namespace {
 
@@ -66,20 +46,22 @@ void Store(const std::filesystem::path& base, const std::string& key, const Refe
 
 }  // namespace
 
-Reference GetReference(vrli::Renderer& renderer, double seconds, const std::string& dir,
-                       const std::string& name, const std::string& key, int width, int height) {
+Reference GetReference(PassRenderer& renderer, const std::vector<Sampler>& mixture, double seconds,
+                       const std::string& dir, const std::string& name, const std::string& key, int width, int height) {
   std::filesystem::create_directories(dir);
   std::filesystem::path base = std::filesystem::path(dir) / name;
   if (auto cached = LoadCached(base, key, width, height)) return *cached;
 
-  PassStatistics stats(width, height);
+  PassStatistics stats(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   const std::uint64_t seed = 0x5EEDull;  // never used by the comparison runs
-  auto start = std::chrono::steady_clock::now();
   double elapsed = 0;
-  while (elapsed < seconds || stats.passes() < 2) {
-    vrli::PassStats pass_stats;
-    stats.Add(renderer.RenderPass(seed, static_cast<std::uint64_t>(stats.passes()), &pass_stats));
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Whole rounds, so that every sampler holds the same share of the mixture.
+  while (elapsed < seconds || stats.passes() < 2 * static_cast<int>(mixture.size())) {
+    for (Sampler s : mixture) {
+      double t = 0;
+      stats.Add(renderer.Render(s, seed, static_cast<std::uint64_t>(stats.passes()), &t));
+      elapsed += t;
+    }
   }
   Reference r{stats.Mean(), stats.VarianceOfMean(), stats.passes(), elapsed, false};
   Store(base, key, r, width, height);

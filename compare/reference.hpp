@@ -1,23 +1,25 @@
 #pragma once
-// Converged reference images, cached on disk and rebuilt when their settings change.
+// Converged reference images, cached on disk and rebuilt when their settings change. A
+// reference is a mixture: every sampler renders an equal share of its passes (with seeds no
+// study uses), so no sampler is judged against its own fireflies alone.
 #include <string>
 #include <vector>
 
-#include <vrlis_integration/renderer.hpp>
+#include "render_call.hpp"
 
 namespace vrl_compare {
 
 struct Reference {
-  std::vector<double> mean;               // RGB per pixel
-  std::vector<double> variance_of_mean;   // its own remaining noise, per pixel and channel
+  std::vector<double> mean;              // RGB per pixel
+  std::vector<double> variance_of_mean;  // its own remaining noise, per pixel and channel
   int passes = 0;
   double seconds = 0;
   bool from_cache = false;
 };
 
-// Renders `seconds` of passes with `renderer` (or loads them from `dir` when a cached render
-// has exactly the settings described by `key`).
-Reference GetReference(vrli::Renderer& renderer, double seconds, const std::string& dir,
-                       const std::string& name, const std::string& key, int width, int height);
+// Renders about `seconds` of passes, the samplers of `mixture` in turn (or loads them from
+// `dir` when a cached render has exactly the settings described by `key`).
+Reference GetReference(PassRenderer& renderer, const std::vector<Sampler>& mixture, double seconds,
+                       const std::string& dir, const std::string& name, const std::string& key, int width, int height);
 
 }  // namespace vrl_compare

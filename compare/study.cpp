@@ -1,55 +1,78 @@
 #include "study.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
-#include <vrlis_integration/renderer.hpp>
-#include <vrlis_scenes/scenes.hpp>
-
 #include "image_stats.hpp"
 #include "reference.hpp"
+#include <vrlis_scenes/scenes.hpp>
 
 namespace vrl_compare {
-
-double Rmse(const std::vector<double>& image, const std::vector<double>& reference,
-            const std::vector<double>& reference_variance) {
-  double sum = 0;
-  for (std::size_t i = 0; i < image.size(); ++i) sum += (image[i] - reference[i]) * (image[i] - reference[i]) - reference_variance[i];
-  return std::sqrt(std::max(sum / static_cast<double>(image.size()), 0.0));
-}
-
 namespace {
 
 // Everything a reference image depends on; a cached one is reused only if this matches.
 std::string ReferenceKey(const StudyConfig& c, const vrli::TransportSettings& t) {
   std::ostringstream key;
-  key << "v1 scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height << " vrls=" << c.vrls
-      << " method=" << vrlis::Name(c.reference_method) << " seconds=" << c.reference_seconds
-      << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.indirect << t.light_caustics
-      << t.first_segment_only << "/" << t.max_depth << "/" << t.rr_depth;
+  key << "v2 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
+      << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " samplers=";
+  for (Sampler s : c.samplers) key << SamplerName(s) << ",";
+  key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect
+      << t.light_caustics << t.first_segment_only << "/" << t.max_depth << "/" << t.rr_depth;
   return key.str();
 }
 
-// log-log interpolation of the error curve at exactly `budget` seconds.
-double ErrorAtBudget(const std::vector<Checkpoint>& curve, double budget) {
-  auto after = std::find_if(curve.begin(), curve.end(), [&](const Checkpoint& c) { return c.seconds >= budget; });
-  if (after == curve.end()) return curve.back().rmse;
-  if (after == curve.begin() || after->rmse <= 0 || std::prev(after)->rmse <= 0) return after->rmse;
-  const Checkpoint& a = *std::prev(after);
-  double s = std::log(budget / a.seconds) / std::log(after->seconds / a.seconds);
-  return a.rmse * std::pow(after->rmse / a.rmse, s);
+double MeanOf(const std::vector<double>& x) {
+  return x.empty() ? 0 : std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
 }
 
 struct Runner {
-  vrlis::Method method;
-  std::uint64_t seed;
-  PassStatistics stats;
-  double seconds = 0;
-  MethodResult result;
+  Sampler sampler;
+  std::vector<PassStatistics> replicates;
+  PassStatistics all;
+  std::vector<double> seconds;  // per replicate
+
+  Replicates Summary(int per_replicate) const {
+    Replicates r;
+    for (std::size_t rep = 0; rep < replicates.size(); ++rep) {
+      r.variance.push_back(replicates[rep].MeanPassVariance());
+      r.seconds.push_back(seconds[rep] / per_replicate);
+    }
+    return r;
+  }
 };
+
+// Whether the most efficient sampler leads the runner-up by more than the margin while its
+// interval does not yet show it: such a study goes on (up to its extension), so that a
+// real winner near the threshold is not called "best" by one run and "tie" by the next.
+bool Undecided(const std::vector<Runner>& runners, int per_replicate, double margin) {
+  std::vector<Replicates> r;
+  for (const Runner& run : runners) r.push_back(run.Summary(per_replicate));
+  std::sort(r.begin(), r.end(), [](const Replicates& a, const Replicates& b) { return Efficiency(a) > Efficiency(b); });
+  RatioInterval lead = EfficiencyRatio(r[0], r[1]);
+  return lead.point > margin && !lead.Above(margin);
+}
+
+// "best" for the most efficient sampler when its interval against the runner-up lies above
+// the margin; otherwise "tie" for it and for every sampler its interval does not separate
+// from it.
+void Decide(StudyResult& r, double margin) {
+  std::vector<SamplerResult*> order;
+  for (SamplerResult& s : r.samplers) order.push_back(&s);
+  std::sort(order.begin(), order.end(),
+            [](const SamplerResult* a, const SamplerResult* b) { return a->efficiency > b->efficiency; });
+  SamplerResult& top = *order[0];
+  r.top_vs_runner_up = EfficiencyRatio(top.replicates, order[1]->replicates);
+  if (r.top_vs_runner_up.Above(margin)) {
+    top.verdict = r.verdict = "best";
+    return;
+  }
+  r.verdict = "tie";
+  top.verdict = "tie";
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (!EfficiencyRatio(top.replicates, order[i]->replicates).Above(margin)) order[i]->verdict = "tie";
+}
 
 }  // namespace
 
@@ -63,53 +86,82 @@ StudyResult RunStudy(const StudyConfig& config) {
   settings.height = config.height;
   settings.vrls_per_pass = config.vrls;
   settings.transport = built->transport;
-  // One renderer per camera sampler: the sampling method is part of the render settings.
-  auto renderer_for = [&](vrlis::Method m) {
-    vrli::RenderSettings s = settings;
-    s.transport.sampling = {m, {}};
-    return vrli::VrlRenderer(built->scene, s);
-  };
-  vrli::VrlRenderer reference_renderer = renderer_for(config.reference_method);
+  PassRenderer renderer(built->scene, settings);
+  const std::size_t values = 3 * static_cast<std::size_t>(config.width) * static_cast<std::size_t>(config.height);
+  const auto replicates = static_cast<std::size_t>(config.replicates);
 
   std::ostringstream name;
   name << config.scene << "_g" << config.g;
-  Reference reference = GetReference(reference_renderer, config.reference_seconds, config.reference_dir,
+  Reference reference = GetReference(renderer, config.samplers, config.reference_seconds, config.reference_dir,
                                      name.str(), ReferenceKey(config, settings.transport), config.width, config.height);
 
+  std::vector<std::uint64_t> seeds(replicates);
+  for (std::size_t r = 0; r < replicates; ++r) seeds[r] = vrli::SplitMix64(config.seed * 1000003 + r);
   std::vector<Runner> runners;
-  for (std::size_t i = 0; i < config.methods.size(); ++i)
-    runners.push_back({config.methods[i], vrli::SplitMix64(config.seed * 1000003 + i),
-                       PassStatistics(config.width, config.height), 0, {}});
+  for (Sampler s : config.samplers)
+    runners.push_back({s, std::vector<PassStatistics>(replicates, PassStatistics(values)), PassStatistics(values),
+                       std::vector<double>(replicates, 0.0)});
 
-  // The method that has spent the least time renders next, so that a noisy machine slows
-  // all of them alike and every curve covers the same stretch of wall time.
-  while (true) {
-    auto next = std::min_element(runners.begin(), runners.end(),
-                                 [](const Runner& a, const Runner& b) { return a.seconds < b.seconds; });
-    if (next->seconds >= config.budget) break;
-    vrli::PassStats pass_stats;
-    auto start = std::chrono::steady_clock::now();
-    vrli::Film pass = renderer_for(next->method).RenderPass(next->seed, static_cast<std::uint64_t>(next->stats.passes()), &pass_stats);
-    next->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    next->stats.Add(pass);
-    next->result.curve.push_back({next->seconds, next->stats.passes(),
-                                  Rmse(next->stats.Mean(), reference.mean, reference.variance_of_mean)});
+  // Whole cycles (one pass of every replicate) so that all replicates hold the same number
+  // of passes; at least two, for a variance within each.
+  int per_replicate = 0;
+  std::size_t round = 0;
+  auto spent = [&](const Runner& r) { return std::accumulate(r.seconds.begin(), r.seconds.end(), 0.0); };
+  auto below = [&](double seconds) {
+    return std::any_of(runners.begin(), runners.end(), [&](const Runner& r) { return spent(r) < seconds; });
+  };
+  while (per_replicate < 2 || below(config.budget) ||
+         (below(config.extension * config.budget) && Undecided(runners, per_replicate, config.margin))) {
+    for (std::size_t rep = 0; rep < replicates; ++rep, ++round)
+      for (std::size_t k = 0; k < runners.size(); ++k) {
+        Runner& run = runners[(k + round) % runners.size()];
+        double seconds = 0;
+        std::vector<double> pass =
+            FromFilm(renderer.Render(run.sampler, seeds[rep], static_cast<std::uint64_t>(per_replicate), &seconds));
+        run.seconds[rep] += seconds;
+        run.replicates[rep].Add(pass);
+        run.all.Add(pass);
+      }
+    ++per_replicate;
   }
 
   StudyResult out;
   out.config = config;
+  out.passes_per_replicate = per_replicate;
   out.reference_passes = reference.passes;
   out.reference_seconds = reference.seconds;
   out.reference_cached = reference.from_cache;
-  double noise = 0;
-  for (double v : reference.variance_of_mean) noise += v;
-  out.reference_noise_rmse = std::sqrt(noise / static_cast<double>(reference.variance_of_mean.size()));
-  for (Runner& r : runners) {
-    r.result.method = r.method;
-    r.result.rmse_at_budget = ErrorAtBudget(r.result.curve, config.budget);
-    r.result.image = r.stats.Mean();
-    out.methods.push_back(std::move(r.result));
+  out.reference_noise = MeanOf(reference.variance_of_mean);
+  for (Runner& run : runners) {
+    SamplerResult s;
+    s.sampler = run.sampler;
+    s.passes = run.all.passes();
+    s.replicates = run.Summary(per_replicate);
+    s.variance = PooledVariance(s.replicates);
+    s.seconds = PooledSeconds(s.replicates);
+    s.efficiency = Efficiency(s.replicates);
+    s.image = run.all.Mean();
+    std::vector<double> noise = run.all.VarianceOfMean();
+    double error = 0, expected = 0;
+    for (std::size_t i = 0; i < values; ++i) {
+      double d = s.image[i] - reference.mean[i];
+      error += d * d;
+      expected += noise[i] + reference.variance_of_mean[i];
+    }
+    s.error_to_noise = expected > 0 ? error / expected : 0;
+    out.sampler_noise += MeanOf(noise) / static_cast<double>(runners.size());
+    out.samplers.push_back(std::move(s));
   }
+  const auto baseline = std::find_if(out.samplers.begin(), out.samplers.end(),
+                                     [](const SamplerResult& s) { return s.sampler == kBaseline; });
+  std::vector<double> widths;
+  for (SamplerResult& s : out.samplers) {
+    s.to_baseline = EfficiencyRatio(s.replicates, baseline->replicates);
+    if (&s != &*baseline) widths.push_back(s.to_baseline.high / s.to_baseline.point);
+  }
+  std::sort(widths.begin(), widths.end());
+  out.resolution = widths.empty() ? 1 : widths[widths.size() / 2];
+  Decide(out, config.margin);
   out.reference_image = std::move(reference.mean);
   return out;
 }

@@ -1,12 +1,16 @@
 #pragma once
-// One equal-time study: every method renders the same scene for the same wall-clock budget,
-// interleaved pass by pass (the method that has spent the least time goes next), each
-// timing its own passes; the running image is scored against a converged reference.
+// One study of a scene at one g: every sampler renders the same passes (the same light
+// paths and pixel streams: a paired comparison) in R independent replicates with their own
+// seeds, interleaved pass by pass in a rotating order so that a noisy machine slows all of
+// them alike. Per sampler: seconds per pass, per-pass variance (from the passes themselves),
+// efficiency 1 / (variance x seconds), its ratio to Novák's with a 95% interval, and the
+// error against a mixture reference as the check that nothing is biased.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include <vrlis/method.hpp>
+#include "efficiency.hpp"
+#include "render_call.hpp"
 
 namespace vrl_compare {
 
@@ -14,44 +18,50 @@ struct StudyConfig {
   std::string scene;
   float g = 0;
   int width = 48, height = 48;
-  int vrls = 32;                 // light paths per pass
-  double budget = 5;             // seconds per method
-  double reference_seconds = 30;
-  vrlis::Method reference_method = vrlis::CameraSamplers::Of<vrlis::FullProductEntry>();
-  std::vector<vrlis::Method> methods;
+  int vrls = 32;                  // light paths per pass
+  double budget = 8;              // seconds per sampler, at least
+  int replicates = 12;
+  // "best" needs the interval against the runner-up above this: the interval sees the spread
+  // between replicates, not the drift of a shared machine's timings from one run to the next.
+  double margin = 1.05;
+  // A study whose winner leads by more than the margin without its interval showing it yet
+  // goes on, up to this multiple of the budget.
+  double extension = 2;
+  double reference_seconds = 15;  // for the mixture reference, all samplers together
+  std::vector<Sampler> samplers;  // includes kBaseline
   std::uint64_t seed = 1;
-  std::string out_dir;           // this study's folder
-  std::string reference_dir;     // shared cache of references
+  std::string reference_dir;      // shared cache of references
 };
 
-struct Checkpoint {
-  double seconds = 0;
-  int passes = 0;
-  double rmse = 0;
-};
-
-struct MethodResult {
-  vrlis::Method method{};
-  std::vector<Checkpoint> curve;  // one point per pass
-  double rmse_at_budget = 0;      // log-log interpolation at exactly the budget
-  std::vector<double> image;      // the running mean at the end
+struct SamplerResult {
+  Sampler sampler{};
+  int passes = 0;  // over all replicates
+  Replicates replicates;
+  double variance = 0, seconds = 0, efficiency = 0;  // pooled over the replicates
+  RatioInterval to_baseline;                         // efficiency / the baseline's
+  // Mean squared error against the reference over the noise expected of both images:
+  // about 1 for an unbiased sampler, clearly above 1 for a biased one.
+  double error_to_noise = 0;
+  std::string verdict;  // "best", "tie" or empty
+  std::vector<double> image;
 };
 
 struct StudyResult {
   StudyConfig config;
-  std::vector<MethodResult> methods;
+  std::vector<SamplerResult> samplers;
+  int passes_per_replicate = 0;
+  std::string verdict;            // "best" or "tie"
+  RatioInterval top_vs_runner_up;  // efficiency of the most efficient over the next
+  double resolution = 0;          // median over samplers of (interval high / point) against the baseline
   std::vector<double> reference_image;
   int reference_passes = 0;
   double reference_seconds = 0;
   bool reference_cached = false;
-  double reference_noise_rmse = 0;  // sqrt of the reference's mean variance, already subtracted
+  double reference_noise = 0;  // mean over pixels of the reference's variance of the mean
+  double sampler_noise = 0;    // the same for the samplers' images, averaged over samplers
 };
 
+// Throws std::invalid_argument for an unknown scene.
 StudyResult RunStudy(const StudyConfig& config);
-
-// RMSE against the reference with the reference's own noise subtracted (an unbiased
-// estimate of the error against the true image), over all pixels and channels.
-double Rmse(const std::vector<double>& image, const std::vector<double>& reference,
-            const std::vector<double>& reference_variance);
 
 }  // namespace vrl_compare

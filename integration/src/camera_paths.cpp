@@ -22,7 +22,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
           L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrl, rng, tr.query_log, beta);
         count->medium_to_medium += vrls.size();
       }
-      if (tr.direct) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
+      if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {

@@ -13,15 +13,25 @@ vrlis::VrlSegment<float> SegmentOf(const Vrl& vrl) { return {vrl.origin, vrl.dir
 
 // The library's weight models the connection's transmittance in a medium that fills it;
 // a bounded medium may not, and then the scene's own transmittance replaces it.
+float Connect(const Scene& scene, Vec3f a, Vec3f b, float weight, float transmittance) {
+  if (!(weight > 0) || scene.geometry->Occluded(a, b)) return 0;
+  if (!scene.medium.bounded) return weight;
+  return weight * (scene.Transmittance(a, b) / transmittance);
+}
 float Connect(const Scene& scene, const vrlis::GatherSample<float>& s) {
-  if (!s.contributes() || scene.geometry->Occluded(s.camera_point, s.light_point)) return 0;
-  if (!scene.medium.bounded) return s.weight;
-  return s.weight * (scene.Transmittance(s.camera_point, s.light_point) / s.transmittance);
+  return Connect(scene, s.camera_point, s.light_point, s.weight, s.transmittance);
 }
 
 float RmsRgb(Spectrum s) { return std::sqrt((s.r * s.r + s.g * s.g + s.b * s.b) / 3); }
 
 }  // namespace
+
+Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, const Vrl& vrl, float v, float t) {
+  vrlis::MediumGatherQuery<float> q{SegmentOf(seg), SegmentOf(vrl), MediumOf(scene.medium)};
+  float transmittance = 0;
+  float f = vrlis::MediumGatherIntegrand(q, t, v, &transmittance);
+  return vrl.flux * Connect(scene, seg.ray(t), vrl.origin + v * vrl.dir, f, transmittance);
+}
 
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {

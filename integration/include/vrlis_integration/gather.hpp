@@ -21,6 +21,10 @@ struct CameraSegment {
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
 
+// The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
+// by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
+Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, const Vrl& vrl, float v, float t);
+
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on the VRL: the VRL point by `method`.
 Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,

@@ -14,6 +14,9 @@ struct TransportSettings {
   bool medium_to_medium = true;   // VRL gather along camera segments
   bool medium_to_surface = true;  // VRL gather at the diffuse surface ending the camera chain
   bool direct = true;             // next-event estimation at the first camera vertex
+  // With direct: also single scattering along camera segments (off: the surface part alone;
+  // the comparison's noise decomposition takes the two apart).
+  bool single_scattering = true;
   bool indirect = true;           // path-traced remainder (second vertex not a VRL point)
   // Light paths that meet a specular surface before any diffuse or medium vertex (L S+ ...)
   // may go on. Off, the VRL image holds exactly what a path tracer with next-event

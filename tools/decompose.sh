@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Where the noise lives: per scene, the shares of per-pass variance and of time for each
+# part of light transport, and step one versus step two inside the medium-to-medium gather
+# (vrl_compare --decompose; about 3 minutes for the four scenes on 2 cores). Writes
+# out/compare/decompose/; with --publish also docs/compare/decomposition.md and its charts.
+# Other arguments go to vrl_compare (e.g. --scenes room --decompose-seconds 60).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+publish=""
+args=()
+for a in "$@"; do
+  if [ "$a" = "--publish" ]; then publish="docs/compare"; else args+=("$a"); fi
+done
+tools/deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build --target vrl_compare -j "$(nproc)"
+out=out/compare
+build/compare/vrl_compare --decompose --out "$out" "${args[@]}" >/dev/null
+/usr/bin/python3 compare/plot.py "$out" --decompose ${publish:+--publish "$publish"} --command "tools/decompose.sh${*:+ $*}"
+echo "page and charts: $out/decompose/decomposition.md"
