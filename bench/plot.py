@@ -163,7 +163,7 @@ def main():
              + (f" VrlPoint alone: {vp:.0f} ns." if vp else ""))
     def where(rs, bound):
         return "{" + (", ".join(f"{g:g}" for g, x in zip(gs, rs) if x < bound) or "none") + "}"
-    L.append(f"The seed's claim (Cauchy faster per sample than Novák) holds for CauchySum at g in "
+    L.append(f"The thesis's claim (Cauchy faster per sample than Novák) holds for CauchySum at g in "
              f"{where(ratios['cs'], 1)} and for CauchyMixture at g in {where(ratios['cm'], 1)}; the 0.35 goal "
              f"is met by CauchySum at g in {where(ratios['cs'], 0.35)} and by CauchyMixture at g in "
              f"{where(ratios['cm'], 0.35)}.")

@@ -56,7 +56,7 @@ struct Moments {
 
 // The breakpoints of the camera-step quadrature for one query, in delta: the nodes of the
 // piecewise-linear samplers (kinks of their densities), both lobes' peaks and a few multiples
-// of the lobes' and the seed's Cauchy widths around them.
+// of the lobes' and the thesis's Cauchy widths around them.
 inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const AngleDomain<double>& dom,
                                         const CameraSamplerTuple<double>& samplers) {
   double width = dom.width();
@@ -65,7 +65,7 @@ inline std::vector<double> CameraBreaks(const SegmentQuery<double>& q, const Ang
   for (double node : std::get<FullProduct<double>>(samplers).distribution().nodes()) breaks.push_back(node);
   PhaseProduct<double> target(q, dom);
   double a = std::abs(q.g);
-  double cauchy = 4 * (1 - a) * (1 - a) / (1 + a);  // the seed's Cauchy scale at the segment lobe's peak
+  double cauchy = 4 * (1 - a) * (1 - a) / (1 + a);  // the thesis's Cauchy scale at the segment lobe's peak
   const double offsets[] = {0, cauchy, 4 * cauchy, 1 - a, 4 * (1 - a), 16 * (1 - a)};
   for (double peak : {target.point_peak(), target.segment_peak()})
     for (double o : offsets)

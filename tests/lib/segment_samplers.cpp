@@ -125,7 +125,7 @@ void CheckSegmentSampler(const Config& wanted, std::uint64_t seed) {
                 "dof=" + std::to_string(uni.dof) + " p=" + std::to_string(uni.p_value) + " " + Where(c));
     INFO("invert(sample(U)) uniformity: chi-square " << uni.statistic << " p " << uni.p_value);
     // Known float limit (README, "Where each method fails"): the mixture's float CDF is not
-    // accurate next to the seed's |g| = 0.99 Cauchy when the point is within 1e-3 of the
+    // accurate next to the thesis's |g| = 0.99 Cauchy when the point is within 1e-3 of the
     // line; double passes the same check, and the float failure is recorded in the summary.
     const bool known_float_limit = std::is_same_v<Real, float> && std::abs(c.g) > 0.95 && m.h < 1e-2;
     if (!known_float_limit) CHECK(uni.Passes());

@@ -70,7 +70,7 @@ double Hg(double g, V3 a, V3 b) {  // HG(g, a . b) for unit a, b, exact near bot
   return HenyeyGreenstein(g, Dot(dm, dm) / 2, Dot(dp, dp) / 2);
 }
 
-// The full medium-to-medium integrand (section 1 of the maths note) without visibility.
+// The full medium-to-medium integrand (docs/maths.md#medium-to-medium) without visibility.
 double Integrand(const Config& c, double u, double v) {
   V3 w = (c.xl + v * c.wl) - (c.xc + u * c.wc);
   double d2 = Dot(w, w), d = std::sqrt(d2);

@@ -1,6 +1,6 @@
 // The bidirectional scene: its light emits only along fixed directions, which no path
 // tracer can connect to, so the reference is the VRL integral itself (section 1 of the
-// maths note), integrated numerically per pixel (pixel centres) with nested adaptive
+// docs/maths.md#medium-to-medium), integrated numerically per pixel (pixel centres) with nested adaptive
 // Gauss-Kronrod quadrature. Every sampler is checked: per-pixel z-scores over independent
 // passes, Bonferroni over all pixels and samplers.
 #include <boost/math/quadrature/gauss_kronrod.hpp>

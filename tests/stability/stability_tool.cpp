@@ -1,4 +1,4 @@
-// vrlis_stability: the stability table of issue 6. For every sampler and hard case:
+// vrlis_stability: the stability table (docs/stability.md). For every sampler and hard case:
 //   - the largest weight f / (pdf * integral) (the firefly risk; 1 for a perfect sampler),
 //     over 10^5 stratified samples and a 10^4-point grid in the angle variable, in double
 //     and in float, and the mean weight over the stratified samples (~1: unbiasedness check);

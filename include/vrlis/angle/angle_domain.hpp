@@ -1,5 +1,5 @@
 #pragma once
-// The shared reduction of a query to the angle domain (section 3 of the maths note).
+// The shared reduction of a query to the angle domain (docs/maths.md#angle-domain).
 //
 // With u0 the foot of the perpendicular from p and h its length, t - u0 = h tan(theta)
 // turns dt / |p - x(t)|^2 into dtheta / h. Samplers work with the offset

@@ -1,6 +1,6 @@
 #pragma once
 // The sampling target in the angle domain: the product of the segment lobe and the point
-// lobe as functions of delta = theta - theta_a (section 3 of the maths note).
+// lobe as functions of delta = theta - theta_a (docs/maths.md#lobes).
 //
 // Both lobes are evaluated from half-angle sines, so lobes with |g| -> 1 keep their shape
 // next to an endpoint. In evaluate() (a fit's nodes), the half angles of both lobes are

@@ -9,7 +9,7 @@
 namespace vrlis {
 
 // Written in terms of 1 - cos and 1 + cos so that the denominator 1 + g^2 - 2 g cos does
-// not cancel near either peak when |g| -> 1 (section 5 of the maths note).
+// not cancel near either peak when |g| -> 1 (docs/maths.md#numerics).
 template <typename Real>
 Real HenyeyGreenstein(Real g, Real one_minus_cos, Real one_plus_cos) {
   Real denom = g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;

@@ -1,5 +1,5 @@
 #pragma once
-// A Cauchy density in the angle domain, truncated to [0, width], and the seed's fit of one
+// A Cauchy density in the angle domain, truncated to [0, width], and the thesis's fit of one
 // to each phase lobe. Shared by the Cauchy sum and the Cauchy mixture.
 //
 // With x = (theta - mu) / gamma, the primitive atan(x) - atan(x_a) is the argument of
@@ -45,7 +45,7 @@ class TruncatedCauchy {
   Real location_ = 0, scale_ = 1, width_ = 0, mass_ = 0;
 };
 
-// The seed's fit: a Cauchy located at the lobe's peak whose peak value 1 / (pi gamma)
+// The thesis's fit (docs/maths.md#cauchy-fit): a Cauchy located at the lobe's peak whose peak value 1 / (pi gamma)
 // equals the lobe's peak value. Lobes constant in theta only scale the product and are
 // left out (so that g = 0 reduces to equiangular sampling exactly).
 template <typename Real>
@@ -62,7 +62,7 @@ struct CauchyLobes {
  private:
   void Add(Real peak, Real peak_value, Real width, bool segment) {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
-    // (the seed's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
+    // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
     Real extent = width + std::abs(peak), scale = 1 / (kPi<Real> * peak_value);
     // So wide that it is constant over the interval to the last digit: a flat lobe.
     if (!(extent >= scale * std::sqrt(std::numeric_limits<Real>::epsilon()))) return;

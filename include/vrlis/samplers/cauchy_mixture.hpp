@@ -1,8 +1,8 @@
 #pragma once
-// The seed's solution 2: a mixture of the two Cauchys, each normalised over the interval
+// The 2023 TU Wien thesis's solution 2 (docs/maths.md#cauchy-mixture): a mixture of the two Cauchys, each normalised over the interval
 // on its own; sampling picks a component, then inverts one arctangent.
 //
-// Weights (the seed leaves them open): near the peak of lobe k the product is about
+// Weights (the thesis leaves them open): near the peak of lobe k the product is about
 // (lobe k) x (the other lobe's value there), so component k gets the weight
 // mass_k x other_lobe(peak_k clamped into the interval). This is the mixture that matches
 // the product at both peaks; equal weights would waste half the samples whenever one peak

@@ -1,5 +1,5 @@
 #pragma once
-// The seed's solution 1: p(theta) proportional to C1(theta) + C2(theta), normalised jointly.
+// The 2023 TU Wien thesis's solution 1 (docs/maths.md#cauchy-sum): p(theta) proportional to C1(theta) + C2(theta), normalised jointly.
 //
 // The CDF is a sum of two arctangents; the sum of two arctangents is the argument of a
 // product of two complex numbers, so F(delta) = u is a quadratic in delta. Of its two roots

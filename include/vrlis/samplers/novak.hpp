@@ -1,6 +1,6 @@
 #pragma once
 // Novák et al. 2012, anisotropic camera-segment sampling: a piecewise-linear approximation
-// of the phase product over kNodes nodes in the angle domain (section 4 of the maths note).
+// of the phase product over kNodes nodes in the angle domain (docs/maths.md#novak).
 //
 // If the point lobe's peak lies inside the interval the nodes are split there, and on each
 // side they follow a cosine-warped spacing, dense near both ends of the side; the density

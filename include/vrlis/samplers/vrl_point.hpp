@@ -1,6 +1,6 @@
 #pragma once
 // Step one of Novák's estimator: a point on the VRL with density proportional to the
-// inverse distance from the VRL point to the camera line (section 2 of the maths note),
+// inverse distance from the VRL point to the camera line (docs/maths.md#step-one),
 //   p(v) proportional to 1 / sqrt(1 + x(v)^2),  x(v) = k (v - v0),  k = sin(a) / h.
 // The CDF is asinh(x(v)) - asinh(x(tmin)), computed without cancellation.
 //
