@@ -155,11 +155,16 @@ TEST_CASE("the quadrature is converged at g = +-0.99", "[accuracy]") {
 
 TEST_CASE("at g = 0 every phase-only camera sampler is equiangular", "[accuracy]") {
   // Novák and both Cauchy samplers follow the phase product only; FullProduct also follows
-  // transmittance, so with sigma_t = 1 it must do better than equiangular sampling here.
-  for (const Config<double>& p : MakeConfigs(kDefaultSeed, 4, 0.0)) {
+  // transmittance, so on average over these configurations (sigma_t from 0.05 to 5, where
+  // transmittance is sometimes nearly flat) it must do better than equiangular sampling.
+  double full = 0, equiangular = 0;
+  for (const Config<double>& p : MakeConfigs(kDefaultSeed, 8, 0.0)) {
     Moments m = WholeMoments(p.query);
     for (int k = 1; k <= 3; ++k) CHECK(m.RelativeVariance(k) == Approx(m.RelativeVariance(0)).epsilon(1e-6));
     CHECK(Name(kMethods[4]) == "full-product");
-    CHECK(m.RelativeVariance(4) < m.RelativeVariance(0));
+    full += m.RelativeVariance(4);
+    equiangular += m.RelativeVariance(0);
   }
+  INFO("mean relative variance: FullProduct " << full / 8 << ", equiangular " << equiangular / 8);
+  CHECK(full < equiangular);
 }
