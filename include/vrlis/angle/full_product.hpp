@@ -42,6 +42,7 @@ class FullProductTarget {
 
   bool point_lobe_flat() const { return phase_.point_lobe_flat(); }
   Real point_peak() const { return phase_.point_peak(); }
+  const PhaseProduct<Real>& phase() const { return phase_; }
 
   // The fit's split points: the point lobe's peak (as Novák's), and where the segment lobe x
   // transmittance peaks inside the interval. For g < 0 the segment lobe grows towards the

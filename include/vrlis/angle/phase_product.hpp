@@ -83,10 +83,12 @@ class PhaseProduct {
   }
 
   Real point_lobe(Real delta) const {
-    Real phi = delta - theta_e_, s2 = Sqr(std::sin(phi / 2));  // 1 -+ r cos(phi), exact near both peaks
+    Real phi = delta - theta_e_;
     switch (kind_) {
-      case LobeKind::HenyeyGreenstein:
+      case LobeKind::HenyeyGreenstein: {
+        Real s2 = Sqr(std::sin(phi / 2));  // 1 -+ r cos(phi), exact near both peaks
         return HenyeyGreenstein(g_point_, one_minus_r_ + 2 * r_ * s2, one_minus_r_ + 2 * r_ * (1 - s2));
+      }
       case LobeKind::ClampedCosine: return std::max(r_ * std::cos(phi), Real(0)) * kInvPi<Real>;
       case LobeKind::None: break;
     }

@@ -65,7 +65,8 @@ class AutoAngle {
   using Fit = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<FullProduct<Real>>().distribution())>>;
 
   AutoAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : uniform_(q, dom) {
-    if (UniformVarianceBound(TargetRangeRatio(q, dom, PhaseProduct<Real>(q, dom))) > kFitThreshold) fit_.emplace(q, dom);
+    FullProductTarget<Real> target(q, dom);  // built once: the bound reads its lobes, the fit uses it
+    if (UniformVarianceBound(TargetRangeRatio(q, dom, target.phase())) > kFitThreshold) fit_.emplace(target, dom.width());
   }
 
   bool fitted() const { return fit_.has_value(); }

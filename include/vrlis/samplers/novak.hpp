@@ -27,8 +27,10 @@ class PiecewiseLinearAngle {
   using Real = R;
   // Nodes are kept in units of the interval width and values in units of the largest, so
   // that neither tiny intervals nor tiny integrands push the areas into subnormals.
-  PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : width_(dom.width()) {
-    Target target(q, dom);
+  PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
+      : PiecewiseLinearAngle(Target(q, dom), dom.width()) {}
+  // The fit of a target already built (by a caller that needed it for something else).
+  PiecewiseLinearAngle(const Target& target, Real width) : width_(width) {
     std::array<Real, kNodes> node, value;
     // Each side of a split gets at least one interval, the rest in proportion to its width.
     std::array<Real, 2> splits;
