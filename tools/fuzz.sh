@@ -3,9 +3,9 @@
 # -fsanitize=fuzzer,address,undefined) and runs it on the committed corpus in fuzz/corpus for
 # a fixed time; new interesting inputs go to build-fuzz/corpus (merge them into fuzz/corpus
 # with -merge=1 to keep them).
-# fuzz/regressions holds one input per class of violation found so far (not run by default:
-# `tools/fuzz.sh regressions` replays them and lists the ones that still fail; `ctest --preset
-# fuzz` replays them and the corpus as a gate).
+# fuzz/regressions holds one input per class of violation found so far; the test suite replays
+# them and the corpus as a gate (ctest fuzz_regressions, fuzz_corpus); `tools/fuzz.sh
+# regressions` replays them one by one and lists the ones that still fail, for triage.
 # Usage: tools/fuzz.sh [seconds=60] [extra libFuzzer flags...] | tools/fuzz.sh regressions
 set -euo pipefail
 cd "$(dirname "$0")/.."
