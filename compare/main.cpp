@@ -100,12 +100,15 @@ std::string SummaryTable(const std::vector<StudyResult>& results) {
 
 // What the run could tell apart, in words.
 std::string Resolution(const StudyResult& r) {
-  char s[320];
+  char s[512];
   std::snprintf(s, sizeof s,
                 "%s: %d passes per sampler (%d replicates of %d); efficiency ratios resolved to x%.2f "
-                "(median 95%% half-width); %s, most efficient over the next %s\n",
+                "(median 95%% half-width); %s, most efficient over the next %s%s\n",
                 StudyName(r.config).c_str(), r.samplers.front().passes, r.config.replicates, r.passes_per_replicate,
-                r.resolution, r.verdict.c_str(), Interval(r.top_vs_runner_up).c_str());
+                r.resolution, r.verdict.c_str(), Interval(r.top_vs_runner_up).c_str(),
+                r.top_vs_runner_up.low <= r.config.margin && r.top_vs_runner_up.high > r.config.margin
+                    ? " (undecided: the interval still holds the margin at the extended budget)"
+                    : "");
   return s;
 }
 

@@ -43,15 +43,17 @@ struct Runner {
   }
 };
 
-// Whether the most efficient sampler leads the runner-up by more than the margin while its
-// interval does not yet show it: such a study goes on (up to its extension), so that a
-// real winner near the threshold is not called "best" by one run and "tie" by the next.
+// Whether the interval of the most efficient sampler against the runner-up still holds the
+// margin, so that the verdict could go either way: such a study goes on (up to its
+// extension) until the interval lies wholly above the margin ("best") or wholly below it
+// ("tie"), so that a lead near the threshold is not called "best" by one run and "tie" by
+// the next.
 bool Undecided(const std::vector<Runner>& runners, int per_replicate, double margin) {
   std::vector<Replicates> r;
   for (const Runner& run : runners) r.push_back(run.Summary(per_replicate));
   std::sort(r.begin(), r.end(), [](const Replicates& a, const Replicates& b) { return Efficiency(a) > Efficiency(b); });
   RatioInterval lead = EfficiencyRatio(r[0], r[1]);
-  return lead.point > margin && !lead.Above(margin);
+  return lead.low <= margin && lead.high > margin;
 }
 
 // "best" for the most efficient sampler when its interval against the runner-up lies above

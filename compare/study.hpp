@@ -24,8 +24,8 @@ struct StudyConfig {
   // "best" needs the interval against the runner-up above this: the interval sees the spread
   // between replicates, not the drift of a shared machine's timings from one run to the next.
   double margin = 1.05;
-  // A study whose winner leads by more than the margin without its interval showing it yet
-  // goes on, up to this multiple of the budget.
+  // A study whose winner's interval against the runner-up still holds the margin goes on,
+  // up to this multiple of the budget.
   double extension = 2;
   double reference_seconds = 15;  // for the mixture reference, all samplers together
   std::vector<Sampler> samplers;  // includes kBaseline
