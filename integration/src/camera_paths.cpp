@@ -18,8 +18,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) {
-        for (const Vrl& vrl : vrls)
-          L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrl, rng, tr.query_log, beta);
+        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta);
         count->medium_to_medium += vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);

@@ -3,6 +3,8 @@
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
 #include <vrlis/method.hpp>
 
+#include <vector>
+
 #include "query_log.hpp"
 #include "scene.hpp"
 #include "vrl.hpp"
@@ -20,6 +22,13 @@ struct CameraSegment {
 // With a log, the query is offered to it with the weight throughput x flux (query_log.hpp).
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
+
+// The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
+// order: the camera pass's inner loop. The samplers are chosen and the camera segment and
+// medium validated once for all the VRLs.
+Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
+                              Spectrum throughput = Spectrum(1.f));
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
