@@ -110,6 +110,16 @@ QueryError Validate(const Medium<Real>& m) {
   return detail::ValidateMedium(m);
 }
 
+// The surface point of a medium-to-surface query on its own: a query is valid exactly when
+// its point, its VRL and its medium are.
+template <typename Real>
+QueryError ValidateSurfacePoint(Vec3<Real> point, Vec3<Real> normal) {
+  if (!detail::AllFinite(point, normal)) return QueryError::NonFinite;
+  if (!detail::IsUnit(normal)) return QueryError::NotUnitDirection;
+  if (!detail::InRange(point)) return QueryError::OutOfRange;
+  return QueryError::None;
+}
+
 template <typename Real>
 QueryError Validate(const MediumGatherQuery<Real>& q) {
   const auto& c = q.camera;

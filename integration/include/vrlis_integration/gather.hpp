@@ -35,9 +35,10 @@ Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, co
 Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, const Vrl& vrl, float v, float t);
 
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
-// albedo) from light scattered on the VRL: the VRL point by `method`.
+// albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
+// each): the sampler is chosen and the point and medium validated once for all the VRLs.
 Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
-                               const Vrl& vrl, Rng& rng);
+                               const std::vector<Vrl>& vrls, Rng& rng);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance).
