@@ -67,7 +67,7 @@ if command -v perf >/dev/null; then
   perf record -q -o "$out/runs/perf.data" "$new/examples/vrl_render" --scene bidirectional --sampler novak --threads 1 \
     --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf" >/dev/null 2>&1 || true
   perf report -q -i "$out/runs/perf.data" --no-children --sort symbol --stdio 2>/dev/null | grep -E '^ +[0-9]' |
-    head -15 >"$out/runs/perf.txt" || true
+    sed -E 's/[ -]+$//' | head -15 >"$out/runs/perf.txt" || true
 fi
 
 echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
@@ -152,7 +152,8 @@ if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
     echo '## Speed against the baseline and the cost of one gather'
     echo
     echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`tools/speed.sh\`"
-    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds)."
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds; load average"
+    echo "at the end $(cut -d' ' -f1-3 /proc/loadavg): above the core count, the 2-thread columns measure the other load)."
     echo
     cat "$out/speed.md"; } >"$out/bench.md.new"
   mv "$out/bench.md.new" docs/bench.md
