@@ -67,7 +67,7 @@ if command -v perf >/dev/null; then
   perf record -q -o "$out/runs/perf.data" "$new/examples/vrl_render" --scene bidirectional --sampler novak --threads 1 \
     --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf" >/dev/null 2>&1 || true
   perf report -q -i "$out/runs/perf.data" --no-children --sort symbol --stdio 2>/dev/null | grep -E '^ +[0-9]' |
-    head -15 >"$out/runs/perf.txt" || true
+    sed -E 's/[ -]+$//' | head -15 >"$out/runs/perf.txt" || true
 fi
 
 echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
@@ -93,9 +93,21 @@ for scene in scenes:
         b1, n1, b2, n2 = (gps(scene, s, t, b) for t, b in ((1, "base"), (1, "new"), (2, "base"), (2, "new")))
         print(f"| {scene} | {s} | {b1/1e6:.2f} M | {n1/1e6:.2f} M | **{n1/b1:.2f}** | {b2/1e6:.2f} M | {n2/1e6:.2f} M | "
               f"{n2/b2:.2f} | {b2/b1:.2f} | **{n2/n1:.2f}** |")
+# The baseline names its benchmarks by class (Camera/Novak), this tree by registry name
+# (Camera/novak): both are read under the class name.
+CLASS = {"equiangular": "Equiangular", "novak": "Novak", "cauchy-sum": "CauchySum", "cauchy-mixture": "CauchyMixture",
+         "full-product": "FullProduct", "auto": "Auto"}
+def by_class(name):
+    kind, sampler, rest = name.split("/", 2)
+    return f"{kind}/{CLASS.get(sampler, sampler)}/{rest}"
+def load(path):
+    runs = json.load(open(path))["benchmarks"]
+    for b in runs:
+        b["name"] = by_class(b["name"]) if b["name"].count("/") >= 2 else b["name"]
+    return runs
 times = {}
 for build in ("base", "new"):
-    runs = [json.load(open(f"{out}/runs/bench_{build}_{r}.json"))["benchmarks"] for r in range(1, reps + 1)]
+    runs = [load(f"{out}/runs/bench_{build}_{r}.json") for r in range(1, reps + 1)]
     for name in {b["name"] for b in runs[0]}:
         times[build, name] = statistics.median(b["cpu_time"] for run in runs for b in run if b["name"] == name)
 names = sorted({n for _, n in times}, key=lambda n: (n.split("/")[1], float(n.split(":")[1])))
@@ -110,14 +122,14 @@ for g in gs:
     row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
     ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
-parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/parts.json"))["benchmarks"]
+parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
          if b.get("aggregate_name") == "median"}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray)\n")
 print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest |")
 print("|---|---|---|---|---|---|---|---|---|")
 for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
     for g in (-0.9, 0.5, 0.9):
-        whole, fit, cam = parts[f"Gather/{m}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], t("new", c, g)
+        whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], t("new", c, g)
         v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
         print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} |")
 try:
@@ -140,7 +152,8 @@ if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
     echo '## Speed against the baseline and the cost of one gather'
     echo
     echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`tools/speed.sh\`"
-    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds)."
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds; load average"
+    echo "at the end $(cut -d' ' -f1-3 /proc/loadavg): above the core count, the 2-thread columns measure the other load)."
     echo
     cat "$out/speed.md"; } >"$out/bench.md.new"
   mv "$out/bench.md.new" docs/bench.md

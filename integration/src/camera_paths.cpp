@@ -18,8 +18,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) {
-        for (const Vrl& vrl : vrls)
-          L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrl, rng, tr.query_log, beta);
+        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta);
         count->medium_to_medium += vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
@@ -50,8 +49,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     // The first diffuse vertex ends the camera chain.
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
     if (tr.medium_to_surface && m.Present()) {
-      for (const Vrl& vrl : vrls)
-        L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrl, rng);
+      L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrls, rng);
       count->medium_to_surface += vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);

@@ -41,10 +41,43 @@ Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, co
   return vrl.flux * Connect(scene, vrlis::SampleMediumGather(method, q, u_vrl, u_camera));
 }
 
+Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput) {
+  const vrlis::RaySegment<float> camera = SegmentOf(seg);
+  const vrlis::Medium<float> medium = MediumOf(scene.medium);
+  const bool valid = vrlis::Validate(camera) == vrlis::QueryError::None &&
+                     vrlis::Validate(medium) == vrlis::QueryError::None;
+  return vrlis::WithGatherSamplers<float>(method, [&](auto step_one, auto step_two) {
+    using StepOne = typename decltype(step_one)::type;
+    using StepTwo = typename decltype(step_two)::type;
+    Spectrum sum;
+    for (const Vrl& vrl : vrls) {
+      float u_vrl = rng.Uniform(), u_camera = rng.Uniform();
+      vrlis::MediumGatherQuery<float> q{camera, SegmentOf(vrl), medium};
+      if (log) log->Record(q, RmsRgb(throughput * vrl.flux));
+      if (!valid || vrlis::Validate(q.vrl) != vrlis::QueryError::None) continue;
+      sum += vrl.flux * Connect(scene, vrlis::SampleMediumGather<StepOne, StepTwo>(vrlis::ValidQuery{}, q, u_vrl, u_camera));
+    }
+    return sum;
+  });
+}
+
 Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
-                               const Vrl& vrl, Rng& rng) {
-  vrlis::SurfaceGatherQuery<float> q{p, nf, SegmentOf(vrl), MediumOf(scene.medium)};
-  return vrl.flux * albedo * Connect(scene, vrlis::SampleSurfaceGather(method, q, rng.Uniform()));
+                               const std::vector<Vrl>& vrls, Rng& rng) {
+  const vrlis::Medium<float> medium = MediumOf(scene.medium);
+  const bool valid = vrlis::ValidateSurfacePoint(p, nf) == vrlis::QueryError::None &&
+                     vrlis::Validate(medium) == vrlis::QueryError::None;
+  return vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
+    using Sampler = typename decltype(entry)::template Sampler<float>;
+    Spectrum sum;
+    for (const Vrl& vrl : vrls) {
+      float u = rng.Uniform();
+      vrlis::SurfaceGatherQuery<float> q{p, nf, SegmentOf(vrl), medium};
+      if (!valid || vrlis::Validate(q.vrl) != vrlis::QueryError::None) continue;
+      sum += vrl.flux * Connect(scene, vrlis::SampleSurfaceGather<Sampler>(vrlis::ValidQuery{}, q, u));
+    }
+    return albedo * sum;
+  });
 }
 
 Spectrum SingleScattering(vrlis::Method method, const Scene& scene, const CameraSegment& seg, Rng& rng) {

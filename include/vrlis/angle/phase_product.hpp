@@ -58,8 +58,10 @@ class PhaseProduct {
       for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
       return;
     }
-    // (Computed here, not in the constructor: the Cauchy fits never need them.)
-    const LobeShape a = Shape(g_, 1, 0, SinCos(lower_ / 2)), b = Shape(g_point_, r_, one_minus_r_, SinCos(theta_e_ / 2));
+    // (Computed here, not in the constructor: the Cauchy fits never need them. Inline
+    // sines: two independent libm calls cost more than the polynomial, which overlaps.)
+    const LobeShape a = Shape(g_, 1, 0, SinCosLanes(lower_ / 2)),
+                    b = Shape(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
     for (std::size_t j = 0; j < N; ++j) {
       SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
       Real wa = half.sin * a.from_sin + half.cos * a.from_cos, wb = half.sin * b.from_sin + half.cos * b.from_cos;

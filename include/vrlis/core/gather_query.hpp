@@ -89,6 +89,37 @@ QueryError ValidateVrl(const VrlSegment<Real>& v) {
 }
 }  // namespace detail
 
+// The parts of a gather query on their own, finiteness included. A medium-to-medium query
+// is valid exactly when its camera segment, VRL and medium are: a renderer validates a
+// camera segment once for all the VRLs it gathers, not once per gather.
+template <typename Real>
+QueryError Validate(const RaySegment<Real>& s) {
+  if (!detail::AllFinite(s.origin, s.dir, s.tmin) || std::isnan(s.tmax)) return QueryError::NonFinite;
+  return detail::ValidateSegment(s);
+}
+
+template <typename Real>
+QueryError Validate(const VrlSegment<Real>& v) {
+  if (!detail::AllFinite(v.origin, v.dir, v.length)) return QueryError::NonFinite;
+  return detail::ValidateVrl(v);
+}
+
+template <typename Real>
+QueryError Validate(const Medium<Real>& m) {
+  if (!detail::AllFinite(m.g, m.sigma_s, m.sigma_t)) return QueryError::NonFinite;
+  return detail::ValidateMedium(m);
+}
+
+// The surface point of a medium-to-surface query on its own: a query is valid exactly when
+// its point, its VRL and its medium are.
+template <typename Real>
+QueryError ValidateSurfacePoint(Vec3<Real> point, Vec3<Real> normal) {
+  if (!detail::AllFinite(point, normal)) return QueryError::NonFinite;
+  if (!detail::IsUnit(normal)) return QueryError::NotUnitDirection;
+  if (!detail::InRange(point)) return QueryError::OutOfRange;
+  return QueryError::None;
+}
+
 template <typename Real>
 QueryError Validate(const MediumGatherQuery<Real>& q) {
   const auto& c = q.camera;

@@ -3,7 +3,8 @@
 // vectorise: a call to libm cannot be, and neither can std::sqrt unless errno is off
 // (-fno-math-errno, which a header cannot impose). So in float these are inlined,
 // branch-free arithmetic; double keeps the standard functions. Outside such loops use the
-// standard functions (SinCos below: glibc's sincosf is the fastest scalar version we measured).
+// standard functions (SinCos below: for one value, glibc's sincosf is the fastest scalar version we
+// measured; two independent values, as Novak's fit's two rotations, are cheaper inline).
 //
 // SinCosLanes: x = k pi/2 + r with k the nearest integer to x 2/pi (pi/2 split into three floats, the
 // first with 8 significant bits, so that k times it is exact for |k| < 2^16), then the

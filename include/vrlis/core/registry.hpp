@@ -14,6 +14,12 @@
 
 namespace vrlis {
 
+// A type passed as a value (to a generic lambda, which reads it back as decltype(arg)::type).
+template <typename T>
+struct Type {
+  using type = T;
+};
+
 template <typename Registry>
 class Choice {
  public:
@@ -37,13 +43,13 @@ struct RealOf<Query<R>> {
   using type = R;
 };
 
-template <typename Real, typename F, typename Entry, typename... Rest, typename... Args>
-decltype(auto) Dispatch(int index, F& f, const Args&... args) {
+template <typename F, typename Entry, typename... Rest>
+decltype(auto) DispatchEntry(int index, F& f) {
   if constexpr (sizeof...(Rest) == 0) {
-    return f(typename Entry::template Sampler<Real>(args...));
+    return f(Entry{});
   } else {
-    if (index == 0) return f(typename Entry::template Sampler<Real>(args...));
-    return Dispatch<Real, F, Rest...>(index - 1, f, args...);
+    if (index == 0) return f(Entry{});
+    return DispatchEntry<F, Rest...>(index - 1, f);
   }
 }
 }  // namespace detail
@@ -73,15 +79,26 @@ struct Registry {
     return std::nullopt;
   }
 
+  // Returns f(Entry{}) for the chosen entry: a caller that builds many samplers of one
+  // choice branches once, outside its loop, and its loop is compiled per sampler.
+  template <typename F>
+  static decltype(auto) WithEntry(Choice c, F&& f) {
+    return detail::DispatchEntry<F, Entries...>(c.index(), f);
+  }
+
   // Builds the chosen sampler from q and returns f(sampler); f must return one type for all.
   template <typename Query, typename F>
   static decltype(auto) With(Choice c, const Query& q, F&& f) {
-    return detail::Dispatch<typename detail::RealOf<Query>::type, F, Entries...>(c.index(), f, q);
+    return WithEntry(c, [&](auto entry) {
+      return f(typename decltype(entry)::template Sampler<typename detail::RealOf<Query>::type>(q));
+    });
   }
   // The same for a query the caller has validated (no second validation).
   template <typename Query, typename F>
   static decltype(auto) With(Choice c, ValidQuery, const Query& q, F&& f) {
-    return detail::Dispatch<typename detail::RealOf<Query>::type, F, Entries...>(c.index(), f, ValidQuery{}, q);
+    return WithEntry(c, [&](auto entry) {
+      return f(typename decltype(entry)::template Sampler<typename detail::RealOf<Query>::type>(ValidQuery{}, q));
+    });
   }
 };
 

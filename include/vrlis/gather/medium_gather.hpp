@@ -32,28 +32,49 @@ Real MediumGatherIntegrand(const MediumGatherQuery<Real>& q, Real t, Real v, Rea
          std::exp(-m.sigma_t * ((t - q.camera.tmin) + v)) * connection / r2;
 }
 
-// One estimate from two uniform numbers: u_vrl for step one, u_camera for step two.
+// Calls f(Type<StepOneSampler>{}, Type<CameraSampler>{}) for the samplers of `method`:
+// a renderer branches on the method once, outside its loop over VRLs.
+template <typename Real, typename F>
+decltype(auto) WithGatherSamplers(GatherMethod method, F&& f) {
+  return VrlSamplers::WithEntry(method.vrl, [&](auto vrl) {
+    return CameraSamplers::WithEntry(method.camera, [&](auto camera) {
+      return f(Type<typename decltype(vrl)::template Sampler<Real>>{},
+               Type<typename decltype(camera)::template Sampler<Real>>{});
+    });
+  });
+}
+
+// One estimate from two uniform numbers (u_vrl for step one, u_camera for step two) with
+// both samplers fixed at compile time, for a query the caller has validated
+// (Validate(q) == QueryError::None): the renderer's inner loop. Flattened: compilers stop
+// inlining the samplers once a translation unit holds many of them (every method of the
+// registry), and the calls then cost as much as the arithmetic.
+template <typename StepOneSampler, typename CameraSampler, typename Real>
+[[gnu::flatten]] GatherSample<Real> SampleMediumGather(ValidQuery, const MediumGatherQuery<Real>& q, Real u_vrl, Real u_camera) {
+  SegmentSample<Real> v = StepOneSampler(ValidQuery{}, q).sample_pdf(u_vrl);
+  if (!detail::Usable(v)) return {};
+  Vec3<Real> y = q.vrl.at(v.t);
+  SegmentSample<Real> t = CameraSampler(ValidQuery{}, CameraStepQuery(q, y)).sample_pdf(u_camera);
+  if (!detail::Usable(t)) return {};
+  GatherSample<Real> s;
+  s.camera_point = q.camera.at(t.t);
+  s.light_point = y;
+  s.t = t.t;
+  s.pdf_t = t.pdf;
+  s.v = v.t;
+  s.pdf_v = v.pdf;
+  Real f = MediumGatherIntegrand(q, t.t, v.t, &s.transmittance);
+  return detail::Finish(s, f, t.pdf * v.pdf);
+}
+
+// The same with the samplers chosen at run time; any query (an invalid one samples nothing).
 template <typename Real>
 GatherSample<Real> SampleMediumGather(GatherMethod method, const MediumGatherQuery<Real>& q, Real u_vrl,
                                       Real u_camera) {
   if (Validate(q) != QueryError::None) return {};
-  return VrlSamplers::With(method.vrl, q, [&](const auto& step_one) {
-    SegmentSample<Real> v = step_one.sample_pdf(u_vrl);
-    if (!detail::Usable(v)) return GatherSample<Real>{};
-    Vec3<Real> y = q.vrl.at(v.t);
-    return CameraSamplers::With(method.camera, ValidQuery{}, CameraStepQuery(q, y), [&](const auto& step_two) {
-      SegmentSample<Real> t = step_two.sample_pdf(u_camera);
-      if (!detail::Usable(t)) return GatherSample<Real>{};
-      GatherSample<Real> s;
-      s.camera_point = q.camera.at(t.t);
-      s.light_point = y;
-      s.t = t.t;
-      s.pdf_t = t.pdf;
-      s.v = v.t;
-      s.pdf_v = v.pdf;
-      Real f = MediumGatherIntegrand(q, t.t, v.t, &s.transmittance);
-      return detail::Finish(s, f, t.pdf * v.pdf);
-    });
+  return WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
+    return SampleMediumGather<typename decltype(step_one)::type, typename decltype(step_two)::type>(ValidQuery{}, q,
+                                                                                                  u_vrl, u_camera);
   });
 }
 

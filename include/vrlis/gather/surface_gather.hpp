@@ -40,19 +40,27 @@ Real SurfaceGatherIntegrand(const SurfaceGatherQuery<Real>& q, Real v, Real* tra
          std::exp(-m.sigma_t * v) * connection / r2;
 }
 
+// One estimate with the sampler fixed at compile time, for a query the caller has validated
+// (flattened, as SampleMediumGather's typed form).
+template <typename Sampler, typename Real>
+[[gnu::flatten]] GatherSample<Real> SampleSurfaceGather(ValidQuery, const SurfaceGatherQuery<Real>& q, Real u) {
+  SegmentSample<Real> v = Sampler(ValidQuery{}, VrlStepQuery(q)).sample_pdf(u);
+  if (!detail::Usable(v)) return {};
+  GatherSample<Real> s;
+  s.camera_point = q.point;
+  s.light_point = q.vrl.at(v.t);
+  s.v = v.t;
+  s.pdf_v = v.pdf;
+  Real f = SurfaceGatherIntegrand(q, v.t, &s.transmittance);
+  return detail::Finish(s, f, v.pdf);
+}
+
+// The same with the sampler chosen at run time; any query (an invalid one samples nothing).
 template <typename Real>
 GatherSample<Real> SampleSurfaceGather(Method method, const SurfaceGatherQuery<Real>& q, Real u) {
   if (Validate(q) != QueryError::None) return {};
-  return CameraSamplers::With(method, ValidQuery{}, VrlStepQuery(q), [&](const auto& sampler) {
-    SegmentSample<Real> v = sampler.sample_pdf(u);
-    if (!detail::Usable(v)) return GatherSample<Real>{};
-    GatherSample<Real> s;
-    s.camera_point = q.point;
-    s.light_point = q.vrl.at(v.t);
-    s.v = v.t;
-    s.pdf_v = v.pdf;
-    Real f = SurfaceGatherIntegrand(q, v.t, &s.transmittance);
-    return detail::Finish(s, f, v.pdf);
+  return CameraSamplers::WithEntry(method, [&](auto entry) {
+    return SampleSurfaceGather<typename decltype(entry)::template Sampler<Real>>(ValidQuery{}, q, u);
   });
 }
 

@@ -58,7 +58,12 @@ class VrlMarginal {
   static constexpr Real kRelativeFloor = Real(0.02);
 
   // Step one of a medium-to-medium gather; the camera segment may be unbounded (tmax = +inf).
-  explicit VrlMarginal(const MediumGatherQuery<Real>& q) : vp_(q) {
+  explicit VrlMarginal(const MediumGatherQuery<Real>& q) : VrlMarginal(q, VrlPoint<Real>(q)) {}
+  // The same for a gather query the caller has validated.
+  VrlMarginal(ValidQuery, const MediumGatherQuery<Real>& q) : VrlMarginal(q, VrlPoint<Real>(ValidQuery{}, q)) {}
+
+ private:
+  VrlMarginal(const MediumGatherQuery<Real>& q, const VrlPoint<Real>& vp) : vp_(vp) {
     if (!valid()) return;
     std::array<Real, kMax> xi, value;
     int count = PlaceNodes(q, xi);
@@ -67,6 +72,7 @@ class VrlMarginal {
     fit_ = PiecewiseLinear<Real, kMax>(xi, value, count);
   }
 
+ public:
   // The gather query's validation (VrlPoint's, which validates the whole query).
   bool valid() const { return vp_.valid(); }
   QueryError error() const { return vp_.error(); }

@@ -44,21 +44,24 @@ template <typename R = float>
 class VrlPoint {
  public:
   using Real = R;
-  explicit VrlPoint(const VrlPointQuery<Real>& q) : VrlPoint(q, QueryError::None) {}
+  explicit VrlPoint(const VrlPointQuery<Real>& q) : VrlPoint(q, Validate(q)) {}
 
   // Step one of a medium-to-medium gather: the VRL against the camera segment's line. The
-  // whole gather query is validated (Validate(MediumGatherQuery)), as every step is.
-  explicit VrlPoint(const MediumGatherQuery<Real>& q)
-      : VrlPoint(VrlPointQuery<Real>{q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.origin, q.camera.dir},
-                 Validate(q)) {}
+  // whole gather query is validated (Validate(MediumGatherQuery)), as every step is; a
+  // valid gather query makes a valid VrlPointQuery.
+  explicit VrlPoint(const MediumGatherQuery<Real>& q) : VrlPoint(LineQuery(q), Validate(q)) {}
+  // The same for a gather query the caller has validated.
+  VrlPoint(ValidQuery, const MediumGatherQuery<Real>& q) : VrlPoint(LineQuery(q), QueryError::None) {}
 
   bool valid() const { return error_ == QueryError::None; }
   QueryError error() const { return error_; }
 
  private:
-  // `first`: an error found before this query was built (None if none).
-  VrlPoint(const VrlPointQuery<Real>& q, QueryError first)
-      : tmin_(q.tmin), tmax_(q.tmax), error_(first != QueryError::None ? first : Validate(q)) {
+  static VrlPointQuery<Real> LineQuery(const MediumGatherQuery<Real>& q) {
+    return {q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.origin, q.camera.dir};
+  }
+  // error: Validate of the query this one was built from.
+  VrlPoint(const VrlPointQuery<Real>& q, QueryError error) : tmin_(q.tmin), tmax_(q.tmax), error_(error) {
     if (!valid() || !Representable()) return;
     Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
     Real sin_a = Length(cross);
@@ -128,11 +131,15 @@ class VrlPoint {
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
   bool Representable() const { return RepresentableLength(tmax_ - tmin_); }
   // For x0 >= 0, d >= 0 and x1 = sinh(asinh(x0) + d): x1 - x0 and sqrt(1 + x1^2) = cosh(...),
-  // both as sums of positive terms.
+  // both as sums of positive terms. One expm1 gives both hyperbolic functions of d: with
+  // e = expm1(d / 2), sinh(d / 2) = e (e + 2) / (2 (e + 1)) and cosh(d / 2) - 1 = e^2 / (2 (e + 1)),
+  // and sinh(d) = 2 sinh(d / 2) cosh(d / 2).
   struct Outward {
     Real dx, root;
     Outward(Real x0, Real d) {
-      Real half = 2 * Sqr(std::sinh(d / 2)), sh = std::sinh(d), r0 = std::sqrt(1 + x0 * x0);
+      Real e = std::expm1(d / 2), inv = 1 / (2 * (e + 1));
+      Real sh_half = e * (e + 2) * inv, ch_half = 1 + e * e * inv;
+      Real half = 2 * Sqr(sh_half), sh = 2 * sh_half * ch_half, r0 = std::sqrt(1 + x0 * x0);
       dx = x0 * half + r0 * sh;
       root = r0 * (1 + half) + x0 * sh;
     }

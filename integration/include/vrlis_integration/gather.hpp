@@ -3,6 +3,8 @@
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
 #include <vrlis/method.hpp>
 
+#include <vector>
+
 #include "query_log.hpp"
 #include "scene.hpp"
 #include "vrl.hpp"
@@ -21,14 +23,22 @@ struct CameraSegment {
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
 
+// The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
+// order: the camera pass's inner loop. The samplers are chosen and the camera segment and
+// medium validated once for all the VRLs.
+Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
+                              Spectrum throughput = Spectrum(1.f));
+
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
 Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, const Vrl& vrl, float v, float t);
 
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
-// albedo) from light scattered on the VRL: the VRL point by `method`.
+// albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
+// each): the sampler is chosen and the point and medium validated once for all the VRLs.
 Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
-                               const Vrl& vrl, Rng& rng);
+                               const std::vector<Vrl>& vrls, Rng& rng);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance).
