@@ -3,6 +3,7 @@
 // return a description of the first violation, or an empty string. Shared by the Catch2
 // suite and the fuzz target (standard library only).
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -43,6 +44,25 @@ struct Violation {
   std::string str() const { return os.str(); }
 };
 
+// A query without a density: invalid (sample NaN, pdf 0, invert NaN) or numerically a point
+// (sample tmin, pdf 0, invert 0). `what` names the case in the description.
+template <typename Sampler, typename Real = typename Sampler::Real, std::size_t N>
+std::string CheckNoDensity(const Sampler& s, bool invalid, Real tmin, const double* us, int n, const Real (&probes)[N],
+                           const char* what, Violation& v) {
+  for (int i = 0; i < n; ++i) {
+    Real u = Real(us[i]), t = s.sample(u);
+    if (invalid ? !std::isnan(t) : !(t == tmin))
+      return (v << what << ": sample(" << u << ") = " << t << ", not " << (invalid ? "NaN" : "tmin")).str();
+  }
+  for (Real t : probes) {
+    if (s.pdf(t) != 0) return (v << what << ": pdf(" << t << ") = " << s.pdf(t) << ", not 0").str();
+    Real c = s.invert(t);
+    if (invalid ? !std::isnan(c) : !(c == 0))
+      return (v << what << ": invert(" << t << ") = " << c << ", not " << (invalid ? "NaN" : "0")).str();
+  }
+  return {};
+}
+
 // Checks one sampler on one query at the given u values. check_round_trip: the pointwise
 // round trip (not for CauchyMixture, whose sample() picks a component first).
 template <typename Sampler>
@@ -56,31 +76,13 @@ std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<type
     return (v << "valid()/error() disagree with Validate: " << vrlis::Describe(err)).str();
   const Real probes[] = {q.tmin, q.tmax, Real(0), Real(1), std::numeric_limits<Real>::infinity(),
                          -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
-  if (!s.valid()) {
-    for (int i = 0; i < n; ++i) {
-      Real u = Real(us[i]);
-      if (!std::isnan(s.sample(u))) return (v << "invalid query: sample(" << u << ") is not NaN").str();
-    }
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "invalid query: pdf(" << t << ") = " << s.pdf(t) << ", not 0").str();
-      if (!std::isnan(s.invert(t))) return (v << "invalid query: invert(" << t << ") is not NaN").str();
-    }
-    return {};
-  }
+  if (!s.valid()) return CheckNoDensity(s, true, q.tmin, us, n, probes, "invalid query", v);
   // Degenerate (contract): shorter than min<Real> / epsilon<Real> (zero length included), or
   // an angle width that underflows.
   bool degenerate = !(s.domain().width() >= std::numeric_limits<Real>::min()) ||
                     !((q.tmax - q.tmin) * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min());
   if (q.tmax == q.tmin && !degenerate) return (v << "zero-length segment with a non-zero angle width").str();
-  if (degenerate) {
-    for (int i = 0; i < n; ++i)
-      if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "degenerate segment: sample is not tmin").str();
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "degenerate segment: pdf(" << t << ") != 0").str();
-      if (!(s.invert(t) == 0)) return (v << "degenerate segment: invert(" << t << ") != 0").str();
-    }
-    return {};
-  }
+  if (degenerate) return CheckNoDensity(s, false, q.tmin, us, n, probes, "degenerate segment", v);
   RefQuery ref(q);
   ref.clamp_margin = 1e-6;
   for (Real t : probes) {
@@ -144,25 +146,10 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
     return (v << "error() = " << vrlis::Describe(s.error()) << ", Validate: " << vrlis::Describe(vrlis::Validate(q))).str();
   const Real probes[] = {q.tmin, q.tmax, Real(0), std::numeric_limits<Real>::infinity(),
                          -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
-  if (!valid) {
-    for (int i = 0; i < n; ++i)
-      if (!std::isnan(s.sample(Real(us[i])))) return (v << "invalid query: sample is not NaN").str();
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "invalid query: pdf(" << t << ") != 0").str();
-      if (!std::isnan(s.invert(t))) return (v << "invalid query: invert(" << t << ") is not NaN").str();
-    }
-    return {};
-  }
+  if (!valid) return CheckNoDensity(s, true, q.tmin, us, n, probes, "invalid query", v);
   // Shorter than min<Real> / epsilon<Real>: numerically a point.
-  if (!((q.tmax - q.tmin) * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min())) {
-    for (int i = 0; i < n; ++i)
-      if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "zero-length VRL: sample is not tmin").str();
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "zero-length VRL: pdf(" << t << ") != 0").str();
-      if (!(s.invert(t) == 0)) return (v << "zero-length VRL: invert(" << t << ") != 0").str();
-    }
-    return {};
-  }
+  if (!((q.tmax - q.tmin) * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min()))
+    return CheckNoDensity(s, false, q.tmin, us, n, probes, "zero-length VRL", v);
   for (Real t : probes) {
     Real p = s.pdf(t);
     if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
