@@ -28,6 +28,18 @@ struct Pools {
 // The pool of kPool seeded random configurations for one g (built on first use, outside timing).
 const Pools& PoolsFor(double g);
 
+// The timed loop every benchmark shares: body(i) once per iteration, i cycling through the
+// pool in order.
+template <typename Body>
+void OverPool(benchmark::State& state, Body body) {
+  size_t i = 0;
+  for (auto _ : state) {
+    body(i);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 inline std::string BenchName(const char* kind, std::string_view sampler, double g) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "%s/%.*s/g:%.2f", kind, int(sampler.size()), sampler.data(), g);
