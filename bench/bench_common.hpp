@@ -40,6 +40,19 @@ void OverPool(benchmark::State& state, Body body) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// The timed body of Camera/ and of step one alone: fit a Sampler from query(i), sample at
+// xi(i), pdf.
+template <typename Sampler, typename Query, typename Xi>
+void FitSamplePdf(benchmark::State& state, Query query, Xi xi) {
+  OverPool(state, [&](size_t i) {
+    Sampler s(query(i));
+    float t = s.sample(xi(i));
+    float pdf = s.pdf(t);
+    benchmark::DoNotOptimize(t);
+    benchmark::DoNotOptimize(pdf);
+  });
+}
+
 inline std::string BenchName(const char* kind, std::string_view sampler, double g) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "%s/%.*s/g:%.2f", kind, int(sampler.size()), sampler.data(), g);

@@ -8,13 +8,8 @@ namespace {
 template <typename StepOne>
 void StepOneAlone(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
-  OverPool(state, [&](size_t i) {
-    StepOne s(pools.configs[i].query);
-    float v = s.sample(pools.configs[i].xi_vrl);
-    float pdf = s.pdf(v);
-    benchmark::DoNotOptimize(v);
-    benchmark::DoNotOptimize(pdf);
-  });
+  FitSamplePdf<StepOne>(state, [&](size_t i) -> const MediumGatherQuery<float>& { return pools.configs[i].query; },
+                        [&](size_t i) { return pools.configs[i].xi_vrl; });
 }
 
 }  // namespace

@@ -63,6 +63,32 @@ std::string CheckNoDensity(const Sampler& s, bool invalid, Real tmin, const doub
   return {};
 }
 
+// Every sample at the u values: inside [tmin, tmax], a finite pdf >= 0 there, invert in
+// [0, 1], the sampler's own check extra(u, t, pdf) (a description of the violation, or
+// empty), and |invert(sample(u)) - u| <= tolerance(t, pdf) (infinity: no pointwise round trip).
+template <typename Sampler, typename Real = typename Sampler::Real, typename Extra, typename Tolerance>
+std::string CheckSamples(const Sampler& s, Real tmin, Real tmax, const double* us, int n, Extra extra,
+                         Tolerance tolerance, Violation& v) {
+  for (int i = 0; i < n; ++i) {
+    Real u = Real(us[i]);
+    Real t = s.sample(u);
+    if (!std::isfinite(t) || t < tmin || t > tmax)
+      return (v << "sample(" << u << ") = " << t << " outside [" << tmin << ", " << tmax << "]").str();
+    Real p = s.pdf(t);
+    if (!std::isfinite(p) || p < 0) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
+    std::string own = extra(u, t, p);
+    if (!own.empty()) return own;
+    Real c = s.invert(t);
+    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
+    double tol = tolerance(t, p);
+    if (!(std::abs(double(c) - double(u)) <= tol))
+      return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
+                << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
+          .str();
+  }
+  return {};
+}
+
 // Checks one sampler on one query at the given u values. check_round_trip: the pointwise
 // round trip (not for CauchyMixture, whose sample() picks a component first).
 template <typename Sampler>
@@ -90,32 +116,22 @@ std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<type
     if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
     if (!std::isnan(t) && !(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
   }
-  for (int i = 0; i < n; ++i) {
-    Real u = Real(us[i]);
-    Real t = s.sample(u);
-    if (!std::isfinite(t) || t < q.tmin || t > q.tmax)
-      return (v << "sample(" << u << ") = " << t << " outside [" << q.tmin << ", " << q.tmax << "]").str();
-    Real p = s.pdf(t);
-    if (!std::isfinite(p) || p < 0) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
-    // Positive where the integrand is, unless the density is below what Real can hold: the
-    // check applies where equiangular sampling's density exceeds 1e12 times the smallest
-    // normal Real (the samplers' densities are within that factor of it).
+  // Positive where the integrand is, unless the density is below what Real can hold: the
+  // check applies where equiangular sampling's density exceeds 1e12 times the smallest
+  // normal Real (the samplers' densities are within that factor of it).
+  auto positive = [&](Real u, Real t, Real p) {
     double f = ref.f(double(t));
     bool representable = ref.EquiangularDensity(double(t)) > 1e12L * std::numeric_limits<Real>::min();
     if (f > 0 && std::isfinite(f) && representable && !(p > 0))
       return (v << "pdf(" << t << ") = 0 where the integrand is " << f << " (u = " << u << ")").str();
-    Real c = s.invert(t);
-    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
-    // (Not on the line: there the density is a spike as wide as the rounding of h.)
-    if (check_round_trip && t != std::numeric_limits<Real>::max() && !s.domain().on_line()) {
-      double tol = RoundTripTolerance(t, p, double(s.domain().width()), double(s.domain().dtheta_dt(t)), q.tmin);
-      if (!(std::abs(double(c) - double(u)) <= tol))
-        return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
-                  << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
-            .str();
-    }
-  }
-  return {};
+    return std::string();
+  };
+  // (Not on the line: there the density is a spike as wide as the rounding of h.)
+  auto tolerance = [&](Real t, Real p) {
+    if (!check_round_trip || t == std::numeric_limits<Real>::max() || s.domain().on_line()) return kInf;
+    return RoundTripTolerance(t, p, double(s.domain().width()), double(s.domain().dtheta_dt(t)), q.tmin);
+  };
+  return CheckSamples(s, q.tmin, q.tmax, us, n, positive, tolerance, v);
 }
 
 // VrlPoint's contract.
@@ -154,24 +170,11 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
     Real p = s.pdf(t);
     if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
   }
-  for (int i = 0; i < n; ++i) {
-    Real u = Real(us[i]);
-    Real t = s.sample(u);
-    if (!std::isfinite(t) || t < q.tmin || t > q.tmax)
-      return (v << "sample(" << u << ") = " << t << " outside [" << q.tmin << ", " << q.tmax << "]").str();
-    Real p = s.pdf(t);
-    if (!std::isfinite(p) || !(p > 0)) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
-    Real c = s.invert(t);
-    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
-    if (check_round_trip) {
-      double tol = RoundTripTolerance(t, p, 0, 0, q.tmin);
-      if (!(std::abs(double(c) - double(u)) <= tol))
-        return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
-                  << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
-            .str();
-    }
-  }
-  return {};
+  auto positive = [&](Real u, Real t, Real p) {
+    return p > 0 ? std::string() : (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
+  };
+  auto tolerance = [&](Real t, Real p) { return check_round_trip ? RoundTripTolerance(t, p, 0, 0, q.tmin) : kInf; };
+  return CheckSamples(s, q.tmin, q.tmax, us, n, positive, tolerance, v);
 }
 
 }  // namespace vrlis_stab
