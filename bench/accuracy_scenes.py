@@ -13,16 +13,23 @@ import json
 import math
 import os
 import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from samplers import OWN, POLICIES  # noqa: E402
 
 SCENES = ["bidirectional", "room", "cube", "corner"]
-SAMPLERS = ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]
-PUBLISHED = SAMPLERS[:4]  # full-product is vrlis's own
 
 
 def fmt(x, digits=3):
     if x is None or not math.isfinite(x):
         return "-"
     return f"{x:.{digits}g}"
+
+
+def tabled(acc):
+    """The samplers of one vrlis_accuracy run that the tables show: registry names, in order."""
+    return [n for n in acc["samplers"] if n not in POLICIES]
 
 
 def load(directory):
@@ -45,16 +52,18 @@ def relvar_table(L, runs, step, title):
     L.append(f"### {title}\n")
     L.append("Each cell: unweighted mean / **image-weighted mean** (median in brackets). "
              "Best image-weighted value of the row in bold italics; `+M`: step one by VrlMarginal.\n")
-    L.append("| scene | g | " + " | ".join(SAMPLERS) + " | best weighted | best weighted, published |")
-    L.append("|---" * (len(SAMPLERS) + 4) + "|")
+    samplers = tabled(runs[0][2])
+    published = [s for s in samplers if s not in OWN]
+    L.append("| scene | g | " + " | ".join(samplers) + " | best weighted | best weighted, published |")
+    L.append("|---" * (len(samplers) + 4) + "|")
     for scene, g, acc, _ in runs:
         r = acc["results"][0][step]
         # (JSON null: undefined, e.g. VrlMarginal on unbounded segments)
-        weighted = {s: math.nan if r[s].get("weighted") is None else r[s]["weighted"] for s in SAMPLERS}
-        best = min(SAMPLERS, key=lambda s: weighted[s] if math.isfinite(weighted[s]) else math.inf)
-        best_pub = min(PUBLISHED, key=lambda s: weighted[s] if math.isfinite(weighted[s]) else math.inf)
+        weighted = {s: math.nan if r[s].get("weighted") is None else r[s]["weighted"] for s in samplers}
+        best = min(samplers, key=lambda s: weighted[s] if math.isfinite(weighted[s]) else math.inf)
+        best_pub = min(published, key=lambda s: weighted[s] if math.isfinite(weighted[s]) else math.inf)
         cells = []
-        for s in SAMPLERS:
+        for s in samplers:
             w = fmt(weighted[s])
             w = f"***{w}***" if s == best else f"**{w}**"
             mean, median = (math.nan if r[s][k] is None else r[s][k] for k in ("mean", "median"))
@@ -90,7 +99,7 @@ def summary(runs):
                         ("camera", "camera step")]:
         wins = {}
         for _, _, acc, _ in runs:
-            b = best_weighted(acc, step, SAMPLERS)
+            b = best_weighted(acc, step, tabled(acc))
             wins[b] = wins.get(b, 0) + 1
         text = ", ".join(f"{s} in {c}" for s, c in sorted(wins.items(), key=lambda kv: -kv[1]))
         lines.append(f"- Lowest image-weighted relative variance of the {label}: {text} of {n} runs.")

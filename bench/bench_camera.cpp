@@ -7,16 +7,8 @@ namespace {
 template <typename Sampler>
 void Camera(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
-  size_t i = 0;
-  for (auto _ : state) {
-    Sampler s(pools.camera[i]);
-    float t = s.sample(pools.configs[i].xi_cam);
-    float pdf = s.pdf(t);
-    benchmark::DoNotOptimize(t);
-    benchmark::DoNotOptimize(pdf);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  FitSamplePdf<Sampler>(state, [&](size_t i) -> const SegmentQuery<float>& { return pools.camera[i]; },
+                        [&](size_t i) { return pools.configs[i].xi_cam; });
 }
 
 }  // namespace

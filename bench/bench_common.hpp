@@ -28,6 +28,31 @@ struct Pools {
 // The pool of kPool seeded random configurations for one g (built on first use, outside timing).
 const Pools& PoolsFor(double g);
 
+// The timed loop every benchmark shares: body(i) once per iteration, i cycling through the
+// pool in order.
+template <typename Body>
+void OverPool(benchmark::State& state, Body body) {
+  size_t i = 0;
+  for (auto _ : state) {
+    body(i);
+    i = (i + 1) & (kPool - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// The timed body of Camera/ and of step one alone: fit a Sampler from query(i), sample at
+// xi(i), pdf.
+template <typename Sampler, typename Query, typename Xi>
+void FitSamplePdf(benchmark::State& state, Query query, Xi xi) {
+  OverPool(state, [&](size_t i) {
+    Sampler s(query(i));
+    float t = s.sample(xi(i));
+    float pdf = s.pdf(t);
+    benchmark::DoNotOptimize(t);
+    benchmark::DoNotOptimize(pdf);
+  });
+}
+
 inline std::string BenchName(const char* kind, std::string_view sampler, double g) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "%s/%.*s/g:%.2f", kind, int(sampler.size()), sampler.data(), g);

@@ -10,14 +10,11 @@ namespace {
 
 void Estimator(benchmark::State& state, GatherMethod method, double g) {
   const Pools& pools = PoolsFor(g);
-  size_t i = 0;
-  for (auto _ : state) {
+  OverPool(state, [&](size_t i) {
     const Config<float>& c = pools.configs[i];
     GatherSample<float> s = SampleMediumGather(method, c.query, c.xi_vrl, c.xi_cam);
     benchmark::DoNotOptimize(s.weight);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  });
 }
 
 }  // namespace

@@ -7,13 +7,10 @@ namespace {
 template <typename Sampler>
 void Fit(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
-  size_t i = 0;
-  for (auto _ : state) {
+  OverPool(state, [&](size_t i) {
     Sampler s(pools.camera[i]);
     benchmark::DoNotOptimize(s);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  });
 }
 
 }  // namespace

@@ -24,42 +24,32 @@ const MediumGatherQuery<float>& GatherQuery(const Config<float>& c) { return c.q
 void Gather(benchmark::State& state, Method method, double g) {
   const Pools& pools = PoolsFor(g);
   GatherMethod m{method, VrlSamplers::Of<VrlPointEntry>()};
-  size_t i = 0;
-  for (auto _ : state) {
+  OverPool(state, [&](size_t i) {
     GatherSample<float> s = SampleMediumGather(m, pools.configs[i].query, pools.configs[i].xi_vrl, pools.configs[i].xi_cam);
     benchmark::DoNotOptimize(s);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  });
 }
 
 void Validation(benchmark::State& state) {
   const Pools& pools = PoolsFor(0.5);
-  size_t i = 0;
-  for (auto _ : state) {
+  OverPool(state, [&](size_t i) {
     QueryError e = Validate(GatherQuery(pools.configs[i]));
     benchmark::DoNotOptimize(e);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  });
 }
 
 void StepOne(benchmark::State& state) {
   const Pools& pools = PoolsFor(0.5);
-  size_t i = 0;
-  for (auto _ : state) {
+  OverPool(state, [&](size_t i) {
     VrlPoint<float> vp(GatherQuery(pools.configs[i]));
     SegmentSample<float> v = vp.sample_pdf(pools.configs[i].xi_vrl);
     benchmark::DoNotOptimize(v);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  });
 }
 
 void Integrand(benchmark::State& state) {
   const Pools& pools = PoolsFor(0.5);
-  size_t i = 0;
-  for (auto _ : state) {
+  OverPool(state, [&](size_t i) {
     const Config<float>& c = pools.configs[i];
     const auto& q = c.query;
     float transmittance = 0;
@@ -67,9 +57,7 @@ void Integrand(benchmark::State& state) {
     float f = MediumGatherIntegrand(q, t, c.xi_vrl * q.vrl.length, &transmittance);
     benchmark::DoNotOptimize(f);
     benchmark::DoNotOptimize(transmittance);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  });
 }
 
 }  // namespace

@@ -4,41 +4,21 @@
 namespace vrlis::bench {
 namespace {
 
-void VrlPointStep(benchmark::State& state) {
-  const Pools& pools = PoolsFor(0.0);
-  size_t i = 0;
-  for (auto _ : state) {
-    VrlPoint<float> vp(pools.configs[i].query);
-    float v = vp.sample(pools.configs[i].xi_vrl);
-    float pdf = vp.pdf(v);
-    benchmark::DoNotOptimize(v);
-    benchmark::DoNotOptimize(pdf);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
-}
-
-void VrlMarginalStep(benchmark::State& state, double g) {
+// Step one alone, from the gather query: fit, sample, pdf.
+template <typename StepOne>
+void StepOneAlone(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
-  size_t i = 0;
-  for (auto _ : state) {
-    VrlMarginal<float> vm(pools.configs[i].query);
-    float v = vm.sample(pools.configs[i].xi_vrl);
-    float pdf = vm.pdf(v);
-    benchmark::DoNotOptimize(v);
-    benchmark::DoNotOptimize(pdf);
-    i = (i + 1) & (kPool - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  FitSamplePdf<StepOne>(state, [&](size_t i) -> const MediumGatherQuery<float>& { return pools.configs[i].query; },
+                        [&](size_t i) { return pools.configs[i].xi_vrl; });
 }
 
 }  // namespace
 
 void RegisterVrlPoint() {
-  benchmark::RegisterBenchmark("VrlPoint", VrlPointStep);
+  benchmark::RegisterBenchmark("VrlPoint", [](benchmark::State& s) { StepOneAlone<VrlPoint<float>>(s, 0.0); });
   for (double g : kStudyG)
     benchmark::RegisterBenchmark(BenchName("VrlMarginal", "step", g).c_str(),
-                                 [g](benchmark::State& s) { VrlMarginalStep(s, g); });
+                                 [g](benchmark::State& s) { StepOneAlone<VrlMarginal<float>>(s, g); });
 }
 
 }  // namespace vrlis::bench

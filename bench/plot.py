@@ -16,21 +16,16 @@ import datetime
 import json
 import math
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# The library's registry names (vrlis::kMethods) and the labels the charts and tables use;
-# samplers not listed here (auto: a policy over equiangular and FullProduct, judged in the
-# equal-time study instead) are measured but left out of these tables.
-LABELS = {"equiangular": "Equiangular", "novak": "Novak", "cauchy-sum": "CauchySum",
-          "cauchy-mixture": "CauchyMixture", "full-product": "FullProduct"}
-SAMPLERS = list(LABELS.values())
-COLORS = {"Equiangular": "#7f7f7f", "Novak": "#1f77b4", "CauchySum": "#d62728", "CauchyMixture": "#2ca02c", "FullProduct": "#9467bd"}
-MARKERS = {"Equiangular": "s", "Novak": "o", "CauchySum": "^", "CauchyMixture": "v", "FullProduct": "D"}
-PUBLISHED = ["Equiangular", "Novak", "CauchySum", "CauchyMixture"]  # FullProduct is vrlis's own
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from samplers import OWN, POLICIES, label, style  # noqa: E402
+
 STEPS = [("camera", "Camera", "camera step (fixed VRL point)"),
          ("whole", "Estimator", "whole estimator (VRL point + camera point)"),
          ("whole_marginal", "EstimatorMarginal", "whole estimator with VrlMarginal as step one")]
@@ -39,16 +34,17 @@ WHOLE = [("whole", "Estimator", ""), ("whole_marginal", "EstimatorMarginal", "+M
 UNIT = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 
 
-def load_bench(path):
-    """{run_name: median cpu time in ns} and the run's context."""
+def load_bench(path, names):
+    """{run_name: median cpu time in ns} and the run's context; kind/<registry name>/g:<g>
+    runs are renamed kind/<label>/g:<g>."""
     with open(path) as f:
         data = json.load(f)
     times, singles = {}, {}
     for b in data["benchmarks"]:
         name = b.get("run_name", b["name"])
         parts = name.split("/")
-        if len(parts) == 3 and parts[1] in LABELS:  # kind/<registry name>/g:<g>
-            name = "/".join([parts[0], LABELS[parts[1]], parts[2]])
+        if len(parts) == 3 and parts[1] in names:
+            name = "/".join([parts[0], label(parts[1]), parts[2]])
         t = b["cpu_time"] * UNIT[b.get("time_unit", "ns")]
         if b.get("run_type") == "aggregate":
             if b.get("aggregate_name") == "median":
@@ -87,23 +83,29 @@ def main():
     ap.add_argument("--date", default=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"))
     args = ap.parse_args()
 
-    times, context = load_bench(args.bench)
     with open(args.accuracy) as f:
         acc = json.load(f)
+    names = acc["samplers"]  # the registry's, in its order
+    times, context = load_bench(args.bench, names)
+    tabled = [n for n in names if n not in POLICIES]
+    samplers = [label(n) for n in tabled]
+    published = [label(n) for n in tabled if n not in OWN]
+    styles = {label(n): style(n) for n in tabled}
+
+    def relabel(per_sampler):
+        return {label(n): per_sampler[n] for n in tabled}
+
     for r in acc["results"]:
-        for step, _, _ in STEPS:
+        for step in [st[0] for st in STEPS] + ["whole_bounded"]:
             if step in r:
-                r[step] = {LABELS[k]: v for k, v in r[step].items() if k in LABELS}
+                r[step] = relabel(r[step])
     gs = [r["g"] for r in acc["results"]]
     steps = [st for st in STEPS if all(st[0] in r for r in acc["results"])]
     # VrlMarginal needs a bounded camera segment: with unbounded ones in the study, VrlPoint is
     # compared with it on the bounded configurations only ("whole_bounded").
     bounded = all("whole_bounded" in r for r in acc["results"])
-    for r in acc["results"]:
-        if bounded:
-            r["whole_bounded"] = {LABELS[k]: v for k, v in r["whole_bounded"].items() if k in LABELS}
     whole_steps = [("whole_bounded" if bounded else "whole", "Estimator", ""), WHOLE[1]]
-    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in SAMPLERS}
+    relvar = {step: {(r["g"], s): r[step][s] for r in acc["results"] for s in samplers}
               for step in [st[0] for st in steps] + (["whole_bounded"] if bounded else [])}
 
     def time(prefix, s, g):
@@ -112,7 +114,7 @@ def main():
     eff = {}
     for step, prefix, _ in steps + ([("whole_bounded", "Estimator", "")] if bounded else []):
         for g in gs:
-            for s in SAMPLERS:
+            for s in samplers:
                 t, rv = time(prefix, s, g), relvar[step][(g, s)]
                 eff[(step, g, s)] = 1e9 / (rv["mean"] * t) if t and rv["mean"] > 0 else float("nan")
                 eff[(step, g, s, "median")] = 1e9 / (rv["median"] * t) if t and rv["median"] > 0 else float("nan")
@@ -138,16 +140,14 @@ def main():
 
     # Speed.
     L.append("## Time per sample (ns) and ratios to Novák\n")
-    short = {"Equiangular": "Equi.", "Novak": "Novak", "CauchySum": "CSum", "CauchyMixture": "CMix",
-             "FullProduct": "Full"}
-    L.append("| g | " + " | ".join(SAMPLERS) + " | **CauchySum / Novak** | **CauchyMixture / Novak** | FullProduct / Novak | "
-             + " | ".join(f"estimator: {short[s]}" for s in SAMPLERS) + " | CSum / Novak | CMix / Novak |")
-    L.append("|---" * (2 * len(SAMPLERS) + 6) + "|")
+    L.append("| g | " + " | ".join(samplers) + " | **CauchySum / Novak** | **CauchyMixture / Novak** | FullProduct / Novak | "
+             + " | ".join(f"estimator: {s}" for s in samplers) + " | CSum / Novak | CMix / Novak |")
+    L.append("|---" * (2 * len(samplers) + 6) + "|")
     ratios = {k: [] for k in ["cs", "cm", "fp", "ecs", "ecm"]}
-    idx = {s: i for i, s in enumerate(SAMPLERS)}
+    idx = {s: i for i, s in enumerate(samplers)}
     for g in gs:
-        c = [time("Camera", s, g) for s in SAMPLERS]
-        e = [time("Estimator", s, g) for s in SAMPLERS]
+        c = [time("Camera", s, g) for s in samplers]
+        e = [time("Estimator", s, g) for s in samplers]
         nv = idx["Novak"]
         r = [c[idx["CauchySum"]] / c[nv], c[idx["CauchyMixture"]] / c[nv], c[idx["FullProduct"]] / c[nv],
              e[idx["CauchySum"]] / e[nv], e[idx["CauchyMixture"]] / e[nv]]
@@ -169,7 +169,7 @@ def main():
              f"{where(ratios['cs'], 1)} and for CauchyMixture at g in {where(ratios['cm'], 1)}; the 0.35 goal "
              f"is met by CauchySum at g in {where(ratios['cs'], 0.35)} and by CauchyMixture at g in "
              f"{where(ratios['cm'], 0.35)}.")
-    fits = [(s, [times.get(f"Fit/{s}/{gkey(g)}") for g in gs]) for s in SAMPLERS]
+    fits = [(s, [times.get(f"Fit/{s}/{gkey(g)}") for g in gs]) for s in samplers]
     if all(all(t for t in ts) for _, ts in fits):
         L.append("Of the camera-step time, the fit alone takes (geometric mean over g): "
                  + ", ".join(f"{s} {geomean(ts):.0f} ns" for s, ts in fits) + ".")
@@ -185,20 +185,20 @@ def main():
     # Accuracy and efficiency.
     for step, prefix, title in steps:
         L.append(f"## {title[0].upper() + title[1:]}: relative variance and efficiency\n")
-        L.append("| g | " + " | ".join(f"{s} median / mean" for s in SAMPLERS) + " | "
-                 + " | ".join(f"{s} eff." for s in SAMPLERS) + " | most efficient (margin) | by median "
+        L.append("| g | " + " | ".join(f"{s} median / mean" for s in samplers) + " | "
+                 + " | ".join(f"{s} eff." for s in samplers) + " | most efficient (margin) | by median "
                  "| most efficient of the published samplers (margin) |")
-        L.append("|---" * (2 * len(SAMPLERS) + 4) + "|")
+        L.append("|---" * (2 * len(samplers) + 4) + "|")
         for g in gs:
-            rv = [relvar[step][(g, s)] for s in SAMPLERS]
-            ef = [eff[(step, g, s)] for s in SAMPLERS]
-            efm = [eff[(step, g, s, "median")] for s in SAMPLERS]
-            order = sorted(range(len(SAMPLERS)), key=lambda k: -ef[k])
-            orderm = sorted(range(len(SAMPLERS)), key=lambda k: -efm[k])
-            win = f"**{SAMPLERS[order[0]]}** (x{ef[order[0]] / ef[order[1]]:.2f} over {SAMPLERS[order[1]]})"
-            winm = f"{SAMPLERS[orderm[0]]} (x{efm[orderm[0]] / efm[orderm[1]]:.2f})"
-            pub = [k for k in order if SAMPLERS[k] in PUBLISHED]
-            winp = f"{SAMPLERS[pub[0]]} (x{ef[pub[0]] / ef[pub[1]]:.2f} over {SAMPLERS[pub[1]]})"
+            rv = [relvar[step][(g, s)] for s in samplers]
+            ef = [eff[(step, g, s)] for s in samplers]
+            efm = [eff[(step, g, s, "median")] for s in samplers]
+            order = sorted(range(len(samplers)), key=lambda k: -ef[k])
+            orderm = sorted(range(len(samplers)), key=lambda k: -efm[k])
+            win = f"**{samplers[order[0]]}** (x{ef[order[0]] / ef[order[1]]:.2f} over {samplers[order[1]]})"
+            winm = f"{samplers[orderm[0]]} (x{efm[orderm[0]] / efm[orderm[1]]:.2f})"
+            pub = [k for k in order if samplers[k] in published]
+            winp = f"{samplers[pub[0]]} (x{ef[pub[0]] / ef[pub[1]]:.2f} over {samplers[pub[1]]})"
             L.append(f"| {g:g} | " + " | ".join(f"{fmt(r['median'])} / {fmt(r['mean'])}" for r in rv) + " | "
                      + " | ".join(f"{x:.3g}" for x in ef) + f" | {win} | {winm} | {winp} |")
         L.append("")
@@ -214,7 +214,7 @@ def main():
         L.append("|---" * 7 + "|")
         for g in gs:
             combos = [(s + suffix, eff[(step, g, s)], step, prefix, s) for step, prefix, suffix in whole_steps
-                      for s in SAMPLERS]
+                      for s in samplers]
             combos = [c for c in combos if math.isfinite(c[1])]
             combos.sort(key=lambda c: -c[1])
             bp = max((c for c in combos if c[2] == whole_steps[0][0]), key=lambda c: c[1])
@@ -242,45 +242,39 @@ def main():
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write(table)
 
-    # Chart 1: time per sample against relative variance.
-    fig, axes = plt.subplots(1, len(steps), figsize=(6 * len(steps), 5))
-    for ax, (step, prefix, title) in zip(axes, steps):
-        for s in SAMPLERS:
-            xs = [time(prefix, s, g) for g in gs]
-            ys = [relvar[step][(g, s)]["mean"] for g in gs]
-            ax.scatter(xs, ys, color=COLORS[s], marker=MARKERS[s], label=s, s=36, alpha=0.85)
-            for x, y, g in zip(xs, ys, gs):
-                ax.annotate(f"{g:g}", (x, y), textcoords="offset points", xytext=(4, 2), fontsize=6,
-                            color=COLORS[s])
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("time per sample (ns, float)")
-        ax.set_ylabel("mean relative variance")
-        ax.set_title(title)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.suptitle("Speed against accuracy (labels: g); lower left is better")
-    fig.tight_layout()
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(args.out, f"speed_accuracy.{ext}"), dpi=130)
-    plt.close(fig)
+    def chart(name, suptitle, xlabel, ylabel, draw):
+        """One panel per step; draw(ax, step, prefix, sampler, colour, marker) plots a sampler."""
+        fig, axes = plt.subplots(1, len(steps), figsize=(6 * len(steps), 5))
+        for ax, (step, prefix, title) in zip(axes, steps):
+            for s in samplers:
+                draw(ax, step, prefix, s, *styles[s])
+            ax.set_yscale("log")
+            ax.set_xlabel(xlabel)
+            ax.set_ylabel(ylabel)
+            ax.set_title(title)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
+        fig.suptitle(suptitle)
+        fig.tight_layout()
+        for ext in ("png", "svg"):
+            fig.savefig(os.path.join(args.out, f"{name}.{ext}"), dpi=130)
+        plt.close(fig)
 
-    # Chart 2: efficiency against g.
-    fig, axes = plt.subplots(1, len(steps), figsize=(6 * len(steps), 5))
-    for ax, (step, prefix, title) in zip(axes, steps):
-        for s in SAMPLERS:
-            ax.plot(gs, [eff[(step, g, s)] for g in gs], color=COLORS[s], marker=MARKERS[s], label=s)
-        ax.set_yscale("log")
-        ax.set_xlabel("Henyey-Greenstein g")
-        ax.set_ylabel("efficiency 1 / (relative variance x time)  [1/s]")
-        ax.set_title(title)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.suptitle("Efficiency (higher is better)")
-    fig.tight_layout()
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(args.out, f"efficiency.{ext}"), dpi=130)
-    plt.close(fig)
+    def speed_accuracy(ax, step, prefix, s, colour, marker):
+        xs = [time(prefix, s, g) for g in gs]
+        ys = [relvar[step][(g, s)]["mean"] for g in gs]
+        ax.scatter(xs, ys, color=colour, marker=marker, label=s, s=36, alpha=0.85)
+        for x, y, g in zip(xs, ys, gs):
+            ax.annotate(f"{g:g}", (x, y), textcoords="offset points", xytext=(4, 2), fontsize=6, color=colour)
+        ax.set_xscale("log")
+
+    def efficiency(ax, step, prefix, s, colour, marker):
+        ax.plot(gs, [eff[(step, g, s)] for g in gs], color=colour, marker=marker, label=s)
+
+    chart("speed_accuracy", "Speed against accuracy (labels: g); lower left is better", "time per sample (ns, float)",
+          "mean relative variance", speed_accuracy)
+    chart("efficiency", "Efficiency (higher is better)", "Henyey-Greenstein g",
+          "efficiency 1 / (relative variance x time)  [1/s]", efficiency)
     print(table)
 
 

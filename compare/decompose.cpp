@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
-#include <numeric>
-#include <stdexcept>
 
 #include <tbb/parallel_for.h>
 #include <vrlis/samplers/full_product.hpp>
@@ -13,7 +11,7 @@
 #include <vrlis_integration/light_paths.hpp>
 
 #include "image_stats.hpp"
-#include <vrlis_scenes/scenes.hpp>
+#include "study_scene.hpp"
 
 namespace vrl_compare {
 namespace {
@@ -39,10 +37,9 @@ class Batched {
     return v;
   }
   static Estimate MeanAndError(const std::vector<double>& v) {
-    const double n = static_cast<double>(v.size()), mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
-    double ss = 0;
-    for (double x : v) ss += (x - mean) * (x - mean);
-    return {mean, std::sqrt(ss / (n - 1) / n)};
+    vrlis::RunningMoments m;
+    for (double x : v) m.add(x);
+    return {m.mean(), m.standard_error()};
   }
   std::vector<PassStatistics> batches_;
 };
@@ -233,18 +230,12 @@ void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, 
 }  // namespace
 
 DecomposeResult Decompose(const DecomposeConfig& config) {
-  auto built = vrl_render::BuildScene(config.scene, {});
-  if (!built) throw std::invalid_argument("unknown scene '" + config.scene + "'");
-  vrli::RenderSettings settings;
-  settings.width = config.width;
-  settings.height = config.height;
-  settings.vrls_per_pass = config.vrls;
-  settings.transport = built->transport;
+  const StudyScene scene = BuildStudyScene(config.scene, {}, config.width, config.height, config.vrls);
   DecomposeResult out;
   out.config = config;
-  out.g = built->scene.medium.g;
-  RenderParts(built->scene, settings, config, &out);
-  SplitSteps(built->scene, settings, config, &out);
+  out.g = scene.built.scene.medium.g;
+  RenderParts(scene.built.scene, scene.settings, config, &out);
+  SplitSteps(scene.built.scene, scene.settings, config, &out);
   return out;
 }
 

@@ -1,10 +1,11 @@
 #pragma once
-// Per-pixel running sums of passes: the mean image, the per-pass variance of every pixel
-// (estimated from the passes themselves) and the variance of the mean.
-#include <algorithm>
+// Per-pixel running statistics of passes (vrlis::RunningMoments per pixel and channel): the
+// mean image, the per-pass variance of every pixel (estimated from the passes themselves)
+// and the variance of the mean.
 #include <cstddef>
 #include <vector>
 
+#include <vrlis/core/running_moments.hpp>
 #include <vrlis_integration/film.hpp>
 
 namespace vrl_compare {
@@ -15,52 +16,37 @@ vrli::Film ToFilm(const std::vector<double>& rgb, int width, int height);
 
 class PassStatistics {
  public:
-  explicit PassStatistics(std::size_t values = 0) : sum_(values), sum_sq_(values) {}
+  explicit PassStatistics(std::size_t values = 0) : values_(values) {}
 
   void Add(const std::vector<double>& pass) {
-    for (std::size_t i = 0; i < pass.size(); ++i) {
-      sum_[i] += pass[i];
-      sum_sq_[i] += pass[i] * pass[i];
-    }
+    for (std::size_t i = 0; i < pass.size(); ++i) values_[i].add(pass[i]);
     ++passes_;
   }
   void Add(const vrli::Film& pass) { Add(FromFilm(pass)); }
 
   int passes() const { return passes_; }
 
-  std::vector<double> Mean() const {
-    std::vector<double> m(sum_.size());
-    for (std::size_t i = 0; i < m.size(); ++i) m[i] = sum_[i] / passes_;
-    return m;
-  }
-
+  std::vector<double> Mean() const { return Each(&vrlis::RunningMoments::mean); }
   // Unbiased variance of one pass, per pixel and channel.
-  std::vector<double> PassVariance() const {
-    std::vector<double> v(sum_.size());
-    if (passes_ < 2) return v;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      double mean = sum_[i] / passes_;
-      v[i] = std::max((sum_sq_[i] - passes_ * mean * mean) / (passes_ - 1.0), 0.0);
-    }
-    return v;
-  }
+  std::vector<double> PassVariance() const { return Each(&vrlis::RunningMoments::variance); }
+  std::vector<double> VarianceOfMean() const { return Each(&vrlis::RunningMoments::variance_of_mean); }
 
   // The per-pass variance averaged over pixels and channels: the image's noise per pass.
   double MeanPassVariance() const {
-    std::vector<double> v = PassVariance();
     double sum = 0;
-    for (double x : v) sum += x;
-    return v.empty() ? 0 : sum / static_cast<double>(v.size());
-  }
-
-  std::vector<double> VarianceOfMean() const {
-    std::vector<double> v = PassVariance();
-    for (double& x : v) x /= passes_;
-    return v;
+    for (const vrlis::RunningMoments& m : values_) sum += m.variance();
+    return values_.empty() ? 0 : sum / static_cast<double>(values_.size());
   }
 
  private:
-  std::vector<double> sum_, sum_sq_;
+  std::vector<double> Each(double (vrlis::RunningMoments::*statistic)() const) const {
+    std::vector<double> out;
+    out.reserve(values_.size());
+    for (const vrlis::RunningMoments& m : values_) out.push_back((m.*statistic)());
+    return out;
+  }
+
+  std::vector<vrlis::RunningMoments> values_;  // one per pixel and channel
   int passes_ = 0;
 };
 

@@ -27,13 +27,9 @@ import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker as ticker  # noqa: E402
 
-STYLE = {
-    "equiangular": ("tab:gray", "o"),
-    "novak": ("tab:blue", "s"),
-    "cauchy-sum": ("tab:orange", "^"),
-    "cauchy-mixture": ("tab:red", "v"),
-    "full-product": ("tab:green", "D"),
-}
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from samplers import style  # noqa: E402
+
 PART_COLOURS = {
     "medium-to-medium": "tab:blue",
     "medium-to-surface": "tab:orange",
@@ -84,7 +80,7 @@ def plot_efficiency(results, folder):
         gs = [r["g"] for r in studies]
         samplers = [s["sampler"] for s in studies[0]["samplers"]]
         for k, name in enumerate(samplers):
-            colour, marker = STYLE.get(name, ("black", "x"))
+            colour, marker = style(name)
             xs, ys, lo, hi = [], [], [], []
             for i, r in enumerate(studies):
                 s = next(s for s in r["samplers"] if s["sampler"] == name)

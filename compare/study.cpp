@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <numeric>
 #include <sstream>
-#include <stdexcept>
 
 #include "image_stats.hpp"
 #include "reference.hpp"
-#include <vrlis_scenes/scenes.hpp>
+#include "study_scene.hpp"
 
 namespace vrl_compare {
 namespace {
@@ -81,21 +80,16 @@ void Decide(StudyResult& r, double margin) {
 StudyResult RunStudy(const StudyConfig& config) {
   vrl_render::MediumOverrides overrides;
   overrides.g = config.g;
-  auto built = vrl_render::BuildScene(config.scene, overrides);
-  if (!built) throw std::invalid_argument("unknown scene '" + config.scene + "'");
-  vrli::RenderSettings settings;
-  settings.width = config.width;
-  settings.height = config.height;
-  settings.vrls_per_pass = config.vrls;
-  settings.transport = built->transport;
-  PassRenderer renderer(built->scene, settings);
+  const StudyScene scene = BuildStudyScene(config.scene, overrides, config.width, config.height, config.vrls);
+  PassRenderer renderer(scene.built.scene, scene.settings);
   const std::size_t values = 3 * static_cast<std::size_t>(config.width) * static_cast<std::size_t>(config.height);
   const auto replicates = static_cast<std::size_t>(config.replicates);
 
   std::ostringstream name;
   name << config.scene << "_g" << config.g;
-  Reference reference = GetReference(renderer, config.samplers, config.reference_seconds, config.reference_dir,
-                                     name.str(), ReferenceKey(config, settings.transport), config.width, config.height);
+  Reference reference =
+      GetReference(renderer, config.samplers, config.reference_seconds, config.reference_dir, name.str(),
+                   ReferenceKey(config, scene.settings.transport), config.width, config.height);
 
   std::vector<std::uint64_t> seeds(replicates);
   for (std::size_t r = 0; r < replicates; ++r) seeds[r] = vrli::SplitMix64(config.seed * 1000003 + r);

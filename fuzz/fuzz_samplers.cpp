@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 
+#include "../tests/lib/sampler_types.hpp"
 #include "../tests/stability/contract.hpp"
 
 namespace {
@@ -107,13 +108,13 @@ void Run(Bytes& b, int mode, int lobe) {
   for (int i = 4; i < 8; ++i) us[i] = double(b.Raw<uint32_t>()) / 4294967295.0;
   const int n = 8;
 
+  // Every camera sampler of the library's registry.
   std::string msg;
-  if (!(msg = vrlis_stab::CheckSegmentSampler(vrlis::Equiangular<Real>(q), q, us, n, true)).empty()) Fail("equiangular", msg, q);
-  if (!(msg = vrlis_stab::CheckSegmentSampler(vrlis::Novak<Real>(q), q, us, n, true)).empty()) Fail("novak", msg, q);
-  if (!(msg = vrlis_stab::CheckSegmentSampler(vrlis::CauchySum<Real>(q), q, us, n, true)).empty()) Fail("cauchy-sum", msg, q);
-  if (!(msg = vrlis_stab::CheckSegmentSampler(vrlis::CauchyMixture<Real>(q), q, us, n, false)).empty())
-    Fail("cauchy-mixture", msg, q);
-  if (!(msg = vrlis_stab::CheckSegmentSampler(vrlis::FullProduct<Real>(q), q, us, n, true)).empty()) Fail("full-product", msg, q);
+  vrlis_test::ForEachCameraSampler<Real>([&](auto tag) {
+    using S = typename decltype(tag)::type;
+    msg = vrlis_stab::CheckSegmentSampler(S(q), q, us, n, vrlis_test::RoundTripsPointwise<S>());
+    if (!msg.empty()) Fail(vrlis_test::SamplerName<S>().c_str(), msg, q);
+  });
 
   // VrlPoint: the segment as the VRL, the point and lobe axis as the camera line.
   vrlis::VrlPointQuery<Real> v{q.origin, q.dir, q.tmin, q.tmax, q.point, q.lobe.axis};

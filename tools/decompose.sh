@@ -6,14 +6,8 @@
 # Other arguments go to vrl_compare (e.g. --scenes room --decompose-seconds 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-publish=""
-args=()
-for a in "$@"; do
-  if [ "$a" = "--publish" ]; then publish="docs/compare"; else args+=("$a"); fi
-done
-tools/deps.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build --target vrl_compare -j "$(nproc)"
+source tools/lib.sh
+prepare_vrl_compare "$@"
 out=out/compare
 build/compare/vrl_compare --decompose --out "$out" "${args[@]}" >/dev/null
 /usr/bin/python3 compare/plot.py "$out" --decompose ${publish:+--publish "$publish"} --command "tools/decompose.sh${*:+ $*}"

@@ -5,6 +5,7 @@
 // pairing must be rejected, so the comparison is shown to have teeth; and the quadrature
 // must be converged (refining the tolerances changes nothing that matters).
 #include <catch2/catch.hpp>
+#include <vrlis/core/running_moments.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -26,21 +27,14 @@ struct McMoments {
 // X = f / p for n seeded samples of `draw`, which returns {f, p}.
 McMoments RunMc(std::uint64_t seed, int n, const std::function<std::pair<double, double>(Rng&)>& draw) {
   Rng rng(seed);
-  double s1 = 0, s2 = 0, s4 = 0;
+  RunningMoments x, x2;
   for (int i = 0; i < n; ++i) {
     auto [f, p] = draw(rng);
-    double x = p > 0 ? f / p : 0;
-    double x2 = x * x;
-    s1 += x;
-    s2 += x2;
-    s4 += x2 * x2;
+    double w = p > 0 ? f / p : 0;
+    x.add(w);
+    x2.add(w * w);
   }
-  McMoments m;
-  m.mean = s1 / n;
-  m.second = s2 / n;
-  m.se_mean = std::sqrt(std::max(m.second - m.mean * m.mean, 0.0) / n);
-  m.se_second = std::sqrt(std::max(s4 / n - m.second * m.second, 0.0) / n);
-  return m;
+  return {x.mean(), x2.mean(), x.standard_error(), x2.standard_error()};
 }
 
 // The k-th camera sampler of the registry in double: a sample u and its density p(u).

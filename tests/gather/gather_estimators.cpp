@@ -6,6 +6,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <catch2/catch.hpp>
+#include <vrlis/core/running_moments.hpp>
 #include <vrlis/vrlis.hpp>
 
 #include <cmath>
@@ -34,15 +35,13 @@ template <typename Real, typename Estimate>
 std::pair<double, double> MeanAndError(Estimate estimate, int n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(0, 1);
-  double sum = 0, sum2 = 0;
+  vrlis::RunningMoments weights;
   for (int i = 0; i < n; ++i) {
     double w = estimate(Real(uniform(rng)), Real(uniform(rng)));
     REQUIRE(std::isfinite(w));
-    sum += w;
-    sum2 += w * w;
+    weights.add(w);
   }
-  double mean = sum / n;
-  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0) / (n - 1))};
+  return {weights.mean(), weights.standard_error()};
 }
 
 void CheckUnbiased(const std::string& what, std::pair<double, double> estimate, double integral) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "integrand.hpp"
+#include "sampler_types.hpp"
 #include "stats.hpp"
 
 namespace vrlis_test {
@@ -19,24 +20,7 @@ template <typename Real>
 const char* RealName() { return std::is_same_v<Real, float> ? "float" : "double"; }
 
 template <typename S>
-std::string SamplerName() {
-  using Real = typename S::Real;
-  if constexpr (std::is_same_v<S, vrlis::Equiangular<Real>>) return "Equiangular";
-  else if constexpr (std::is_same_v<S, vrlis::Novak<Real>>) return "Novak";
-  else if constexpr (std::is_same_v<S, vrlis::CauchySum<Real>>) return "CauchySum";
-  else if constexpr (std::is_same_v<S, vrlis::CauchyMixture<Real>>) return "CauchyMixture";
-  else if constexpr (std::is_same_v<S, vrlis::FullProduct<Real>>) return "FullProduct";
-  else if constexpr (std::is_same_v<S, vrlis::VrlPoint<Real>>) return "VrlPoint";
-  else return "unknown";
-}
-
-template <typename S>
 std::string Label() { return SamplerName<S>() + "/" + RealName<typename S::Real>(); }
-
-// Whether sample() is the inverse of invert(): all but the mixture, which picks a component
-// first (see cauchy_mixture.hpp); its round trip is tested in distribution instead.
-template <typename S>
-constexpr bool RoundTripsPointwise() { return !std::is_same_v<S, vrlis::CauchyMixture<typename S::Real>>; }
 
 // Tolerances per Real type. Each is a bound on rounding, with headroom; the summary file
 // records the worst value actually seen so that they can be tightened.

@@ -186,20 +186,6 @@ inline std::vector<long> Histogram(const std::vector<double>& x, const std::vect
   return counts;
 }
 
-// ---- Running statistics ---------------------------------------------------------------
-
-struct Moments {
-  long n = 0;
-  double mean = 0, m2 = 0;  // Welford: stable for the wide ranges of f / pdf
-  void Add(double x) {
-    ++n;
-    double d = x - mean;
-    mean += d / n;
-    m2 += d * (x - mean);
-  }
-  double Variance() const { return n > 1 ? m2 / (n - 1) : 0; }
-};
-
 // ---- Summary --------------------------------------------------------------------------
 
 // The worst value of each metric seen by this process, per sampler label, written on exit

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <vrlis/core/running_moments.hpp>
 #include <vrlis/vrlis.hpp>
 
 #include "stats.hpp"  // tests/lib: the suite's one chi-square test
@@ -264,7 +265,7 @@ TEMPLATE_TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased",
     REQUIRE(reference > 0);
 
     VrlMarginal<Real> m(Query<Real>(c));
-    double sum = 0, sum2 = 0;
+    vrlis::RunningMoments weight;
     for (int k = 0; k < kSamples; ++k) {
       Real v = m.sample(Real(U(rng)));
       Real p1 = m.pdf(v);
@@ -281,12 +282,9 @@ TEMPLATE_TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased",
       Real u = cam.sample(Real(U(rng)));
       Real p2 = cam.pdf(u);
       double f = Integrand(c, double(u), double(v));
-      double x = double(p1) * double(p2) > 0 ? f / (double(p1) * double(p2)) : 0;
-      sum += x;
-      sum2 += x * x;
+      weight.add(double(p1) * double(p2) > 0 ? f / (double(p1) * double(p2)) : 0);
     }
-    double mean = sum / kSamples, var = std::max(sum2 / kSamples - mean * mean, 0.0);
-    double se = std::sqrt(var / kSamples);
+    double mean = weight.mean(), var = weight.variance(), se = weight.standard_error();
     INFO("g " << c.g << " sigma_t " << c.sigma_t << " camera length " << c.s << " mean " << mean << " reference " << reference << " se " << se
               << " relative variance " << var / (reference * reference));
     CHECK(std::abs(mean - reference) <= 4 * se + 1e-6 * reference);

@@ -88,21 +88,12 @@ TEST_CASE("bidirectional: every sampler matches the quadrature of the VRL integr
   for (vrlis::Method method : vrlis::kMethods) {
     s.transport.sampling.camera = method;
     vrli::VrlRenderer renderer(scene, s);
-    std::vector<double> sum(pixels.size()), sum2(pixels.size());
+    std::vector<vrlis::RunningMoments> stats(pixels.size());
     for (int p = 0; p < passes; ++p) {
       vrli::Film f = renderer.RenderPass(5, static_cast<std::uint64_t>(p), nullptr);
-      for (std::size_t k = 0; k < pixels.size(); ++k) {
-        double v = f.at(pixels[k].first, pixels[k].second).r;
-        sum[k] += v;
-        sum2[k] += v * v;
-      }
+      for (std::size_t k = 0; k < pixels.size(); ++k) stats[k].add(f.at(pixels[k].first, pixels[k].second).r);
     }
-    std::vector<double> mean, se;
-    for (std::size_t k = 0; k < pixels.size(); ++k) {
-      double m = sum[k] / passes, var = std::max(0.0, (sum2[k] / passes - m * m) * passes / (passes - 1));
-      mean.push_back(m);
-      se.push_back(std::sqrt(var / passes));
-    }
+    auto [mean, se] = render_test::Estimates(stats);
     auto z = render_test::Compare(mean, se, ref, std::vector<double>(ref.size(), 0.0), 0.01 / static_cast<double>(vrlis::kMethods.size()));
     std::printf("[render] bidirectional, %s vs quadrature: %s\n", std::string(vrlis::Name(method)).c_str(),
                 z.Describe().c_str());

@@ -10,38 +10,37 @@
 #include <string>
 #include <vector>
 
+#include <vrlis/core/running_moments.hpp>
 #include <vrlis_integration/renderer.hpp>
 
 namespace render_test {
 
 struct BlockEstimate {
-  std::vector<double> mean, stderr_;  // per block
+  std::vector<double> mean, stderr_;  // per block (or pixel)
 };
+
+inline BlockEstimate Estimates(const std::vector<vrlis::RunningMoments>& per_block) {
+  BlockEstimate e;
+  for (const vrlis::RunningMoments& m : per_block) {
+    e.mean.push_back(m.mean());
+    e.stderr_.push_back(m.standard_error());
+  }
+  return e;
+}
 
 // Runs `passes` passes and averages (r + g + b) / 3 over square blocks of `block` pixels.
 inline BlockEstimate EstimateBlocks(vrli::Renderer& r, int width, int height, int block,
                                     int passes, std::uint64_t seed, double scale = 1) {
   const int bx = width / block, by = height / block, nb = bx * by;
-  std::vector<double> sum(static_cast<std::size_t>(nb)), sum2(static_cast<std::size_t>(nb));
+  std::vector<vrlis::RunningMoments> stats(static_cast<std::size_t>(nb));
   for (int p = 0; p < passes; ++p) {
     vrli::Film f = r.RenderPass(seed, static_cast<std::uint64_t>(p), nullptr);
     std::vector<double> b(static_cast<std::size_t>(nb));
     for (int y = 0; y < by * block; ++y)
       for (int x = 0; x < bx * block; ++x) b[static_cast<std::size_t>((y / block) * bx + x / block)] += f.at(x, y).Average();
-    for (int k = 0; k < nb; ++k) {
-      double v = scale * b[static_cast<std::size_t>(k)] / (block * block);
-      sum[static_cast<std::size_t>(k)] += v;
-      sum2[static_cast<std::size_t>(k)] += v * v;
-    }
+    for (std::size_t k = 0; k < stats.size(); ++k) stats[k].add(scale * b[k] / (block * block));
   }
-  BlockEstimate e;
-  for (int k = 0; k < nb; ++k) {
-    double m = sum[static_cast<std::size_t>(k)] / passes;
-    double var = std::max(0.0, (sum2[static_cast<std::size_t>(k)] / passes - m * m) * passes / (passes - 1));
-    e.mean.push_back(m);
-    e.stderr_.push_back(std::sqrt(var / passes));
-  }
-  return e;
+  return Estimates(stats);
 }
 
 struct ZSummary {

@@ -3,6 +3,7 @@
 // return a description of the first violation, or an empty string. Shared by the Catch2
 // suite and the fuzz target (standard library only).
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -43,6 +44,51 @@ struct Violation {
   std::string str() const { return os.str(); }
 };
 
+// A query without a density: invalid (sample NaN, pdf 0, invert NaN) or numerically a point
+// (sample tmin, pdf 0, invert 0). `what` names the case in the description.
+template <typename Sampler, typename Real = typename Sampler::Real, std::size_t N>
+std::string CheckNoDensity(const Sampler& s, bool invalid, Real tmin, const double* us, int n, const Real (&probes)[N],
+                           const char* what, Violation& v) {
+  for (int i = 0; i < n; ++i) {
+    Real u = Real(us[i]), t = s.sample(u);
+    if (invalid ? !std::isnan(t) : !(t == tmin))
+      return (v << what << ": sample(" << u << ") = " << t << ", not " << (invalid ? "NaN" : "tmin")).str();
+  }
+  for (Real t : probes) {
+    if (s.pdf(t) != 0) return (v << what << ": pdf(" << t << ") = " << s.pdf(t) << ", not 0").str();
+    Real c = s.invert(t);
+    if (invalid ? !std::isnan(c) : !(c == 0))
+      return (v << what << ": invert(" << t << ") = " << c << ", not " << (invalid ? "NaN" : "0")).str();
+  }
+  return {};
+}
+
+// Every sample at the u values: inside [tmin, tmax], a finite pdf >= 0 there, invert in
+// [0, 1], the sampler's own check extra(u, t, pdf) (a description of the violation, or
+// empty), and |invert(sample(u)) - u| <= tolerance(t, pdf) (infinity: no pointwise round trip).
+template <typename Sampler, typename Real = typename Sampler::Real, typename Extra, typename Tolerance>
+std::string CheckSamples(const Sampler& s, Real tmin, Real tmax, const double* us, int n, Extra extra,
+                         Tolerance tolerance, Violation& v) {
+  for (int i = 0; i < n; ++i) {
+    Real u = Real(us[i]);
+    Real t = s.sample(u);
+    if (!std::isfinite(t) || t < tmin || t > tmax)
+      return (v << "sample(" << u << ") = " << t << " outside [" << tmin << ", " << tmax << "]").str();
+    Real p = s.pdf(t);
+    if (!std::isfinite(p) || p < 0) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
+    std::string own = extra(u, t, p);
+    if (!own.empty()) return own;
+    Real c = s.invert(t);
+    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
+    double tol = tolerance(t, p);
+    if (!(std::abs(double(c) - double(u)) <= tol))
+      return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
+                << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
+          .str();
+  }
+  return {};
+}
+
 // Checks one sampler on one query at the given u values. check_round_trip: the pointwise
 // round trip (not for CauchyMixture, whose sample() picks a component first).
 template <typename Sampler>
@@ -56,31 +102,13 @@ std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<type
     return (v << "valid()/error() disagree with Validate: " << vrlis::Describe(err)).str();
   const Real probes[] = {q.tmin, q.tmax, Real(0), Real(1), std::numeric_limits<Real>::infinity(),
                          -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
-  if (!s.valid()) {
-    for (int i = 0; i < n; ++i) {
-      Real u = Real(us[i]);
-      if (!std::isnan(s.sample(u))) return (v << "invalid query: sample(" << u << ") is not NaN").str();
-    }
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "invalid query: pdf(" << t << ") = " << s.pdf(t) << ", not 0").str();
-      if (!std::isnan(s.invert(t))) return (v << "invalid query: invert(" << t << ") is not NaN").str();
-    }
-    return {};
-  }
+  if (!s.valid()) return CheckNoDensity(s, true, q.tmin, us, n, probes, "invalid query", v);
   // Degenerate (contract): shorter than min<Real> / epsilon<Real> (zero length included), or
   // an angle width that underflows.
   bool degenerate = !(s.domain().width() >= std::numeric_limits<Real>::min()) ||
                     !((q.tmax - q.tmin) * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min());
   if (q.tmax == q.tmin && !degenerate) return (v << "zero-length segment with a non-zero angle width").str();
-  if (degenerate) {
-    for (int i = 0; i < n; ++i)
-      if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "degenerate segment: sample is not tmin").str();
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "degenerate segment: pdf(" << t << ") != 0").str();
-      if (!(s.invert(t) == 0)) return (v << "degenerate segment: invert(" << t << ") != 0").str();
-    }
-    return {};
-  }
+  if (degenerate) return CheckNoDensity(s, false, q.tmin, us, n, probes, "degenerate segment", v);
   RefQuery ref(q);
   ref.clamp_margin = 1e-6;
   for (Real t : probes) {
@@ -88,32 +116,22 @@ std::string CheckSegmentSampler(const Sampler& s, const vrlis::SegmentQuery<type
     if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
     if (!std::isnan(t) && !(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
   }
-  for (int i = 0; i < n; ++i) {
-    Real u = Real(us[i]);
-    Real t = s.sample(u);
-    if (!std::isfinite(t) || t < q.tmin || t > q.tmax)
-      return (v << "sample(" << u << ") = " << t << " outside [" << q.tmin << ", " << q.tmax << "]").str();
-    Real p = s.pdf(t);
-    if (!std::isfinite(p) || p < 0) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
-    // Positive where the integrand is, unless the density is below what Real can hold: the
-    // check applies where equiangular sampling's density exceeds 1e12 times the smallest
-    // normal Real (the samplers' densities are within that factor of it).
+  // Positive where the integrand is, unless the density is below what Real can hold: the
+  // check applies where equiangular sampling's density exceeds 1e12 times the smallest
+  // normal Real (the samplers' densities are within that factor of it).
+  auto positive = [&](Real u, Real t, Real p) {
     double f = ref.f(double(t));
     bool representable = ref.EquiangularDensity(double(t)) > 1e12L * std::numeric_limits<Real>::min();
     if (f > 0 && std::isfinite(f) && representable && !(p > 0))
       return (v << "pdf(" << t << ") = 0 where the integrand is " << f << " (u = " << u << ")").str();
-    Real c = s.invert(t);
-    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
-    // (Not on the line: there the density is a spike as wide as the rounding of h.)
-    if (check_round_trip && t != std::numeric_limits<Real>::max() && !s.domain().on_line()) {
-      double tol = RoundTripTolerance(t, p, double(s.domain().width()), double(s.domain().dtheta_dt(t)), q.tmin);
-      if (!(std::abs(double(c) - double(u)) <= tol))
-        return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
-                  << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
-            .str();
-    }
-  }
-  return {};
+    return std::string();
+  };
+  // (Not on the line: there the density is a spike as wide as the rounding of h.)
+  auto tolerance = [&](Real t, Real p) {
+    if (!check_round_trip || t == std::numeric_limits<Real>::max() || s.domain().on_line()) return kInf;
+    return RoundTripTolerance(t, p, double(s.domain().width()), double(s.domain().dtheta_dt(t)), q.tmin);
+  };
+  return CheckSamples(s, q.tmin, q.tmax, us, n, positive, tolerance, v);
 }
 
 // VrlPoint's contract.
@@ -144,47 +162,19 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
     return (v << "error() = " << vrlis::Describe(s.error()) << ", Validate: " << vrlis::Describe(vrlis::Validate(q))).str();
   const Real probes[] = {q.tmin, q.tmax, Real(0), std::numeric_limits<Real>::infinity(),
                          -std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()};
-  if (!valid) {
-    for (int i = 0; i < n; ++i)
-      if (!std::isnan(s.sample(Real(us[i])))) return (v << "invalid query: sample is not NaN").str();
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "invalid query: pdf(" << t << ") != 0").str();
-      if (!std::isnan(s.invert(t))) return (v << "invalid query: invert(" << t << ") is not NaN").str();
-    }
-    return {};
-  }
+  if (!valid) return CheckNoDensity(s, true, q.tmin, us, n, probes, "invalid query", v);
   // Shorter than min<Real> / epsilon<Real>: numerically a point.
-  if (!((q.tmax - q.tmin) * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min())) {
-    for (int i = 0; i < n; ++i)
-      if (!(s.sample(Real(us[i])) == q.tmin)) return (v << "zero-length VRL: sample is not tmin").str();
-    for (Real t : probes) {
-      if (s.pdf(t) != 0) return (v << "zero-length VRL: pdf(" << t << ") != 0").str();
-      if (!(s.invert(t) == 0)) return (v << "zero-length VRL: invert(" << t << ") != 0").str();
-    }
-    return {};
-  }
+  if (!((q.tmax - q.tmin) * std::numeric_limits<Real>::epsilon() >= std::numeric_limits<Real>::min()))
+    return CheckNoDensity(s, false, q.tmin, us, n, probes, "zero-length VRL", v);
   for (Real t : probes) {
     Real p = s.pdf(t);
     if (!std::isfinite(p) || p < 0) return (v << "pdf(" << t << ") = " << p).str();
   }
-  for (int i = 0; i < n; ++i) {
-    Real u = Real(us[i]);
-    Real t = s.sample(u);
-    if (!std::isfinite(t) || t < q.tmin || t > q.tmax)
-      return (v << "sample(" << u << ") = " << t << " outside [" << q.tmin << ", " << q.tmax << "]").str();
-    Real p = s.pdf(t);
-    if (!std::isfinite(p) || !(p > 0)) return (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
-    Real c = s.invert(t);
-    if (!(c >= 0 && c <= 1)) return (v << "invert(" << t << ") = " << c).str();
-    if (check_round_trip) {
-      double tol = RoundTripTolerance(t, p, 0, 0, q.tmin);
-      if (!(std::abs(double(c) - double(u)) <= tol))
-        return (v << "round trip: invert(sample(" << u << ")) = " << c << ", error " << std::abs(double(c) - double(u))
-                  << " > tolerance " << tol << " (t = " << t << ", pdf " << p << ")")
-            .str();
-    }
-  }
-  return {};
+  auto positive = [&](Real u, Real t, Real p) {
+    return p > 0 ? std::string() : (v << "pdf(sample(" << u << ") = " << t << ") = " << p).str();
+  };
+  auto tolerance = [&](Real t, Real p) { return check_round_trip ? RoundTripTolerance(t, p, 0, 0, q.tmin) : kInf; };
+  return CheckSamples(s, q.tmin, q.tmax, us, n, positive, tolerance, v);
 }
 
 }  // namespace vrlis_stab

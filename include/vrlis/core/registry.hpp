@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string_view>
+#include <tuple>
 
 #include "query.hpp"
 
@@ -59,6 +60,9 @@ struct Registry {
   using Choice = vrlis::Choice<Registry>;
   static constexpr std::size_t kCount = sizeof...(Entries);
   static constexpr std::array<std::string_view, kCount> kNames = {Entries::kName...};
+  // Every sampler in precision Real, as a type list (e.g. for a test over all of them).
+  template <typename Real>
+  using Samplers = std::tuple<typename Entries::template Sampler<Real>...>;
 
   template <typename Entry>
   static constexpr Choice Of() {
