@@ -27,25 +27,56 @@
 
 namespace vrlis {
 
-// An upper bound of the ratio max / min of the phase product over the query's angle
-// interval; infinity when a lobe can vanish in it.
+// The ratio max / min of the segment lobe over the query's angle interval: it is monotone in
+// theta, so extreme at the ends.
+template <typename Real>
+Real SegmentLobeRangeRatio(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  Real s0 = phase.segment_lobe(0), s1 = phase.segment_lobe(dom.width());
+  return std::max(s0, s1) / std::min(s0, s1);
+}
+
+// The ratio max / min of the point lobe over the interval: extreme at the ends or at its peak
+// or antipode when inside; infinity when it vanishes there (a clamped cosine).
+template <typename Real>
+Real PointLobeRangeRatio(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  if (phase.point_lobe_flat()) return 1;
+  Real w = dom.width();
+  Real p0 = phase.point_lobe(0), p1 = phase.point_lobe(w), hi = std::max(p0, p1), lo = std::min(p0, p1);
+  Real peak = phase.point_peak();  // the peak (or, for g < 0, the backward peak) nearest the interval
+  for (Real x : {peak, peak - kPi<Real>, peak + kPi<Real>})
+    if (x > 0 && x < w) {
+      Real v = phase.point_lobe(x);
+      hi = std::max(hi, v);
+      lo = std::min(lo, v);
+    }
+  return hi / lo;
+}
+
+// An upper bound of the ratio max / min of the phase product over the interval; infinity
+// when a lobe can vanish in it.
 template <typename Real>
 Real PhaseRangeRatio(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
-  Real w = dom.width();
-  Real s0 = phase.segment_lobe(0), s1 = phase.segment_lobe(w);
-  Real ratio = std::max(s0, s1) / std::min(s0, s1);
-  if (!phase.point_lobe_flat()) {
-    Real p0 = phase.point_lobe(0), p1 = phase.point_lobe(w), hi = std::max(p0, p1), lo = std::min(p0, p1);
-    Real peak = phase.point_peak();  // the peak (or, for g < 0, the backward peak) nearest the interval
-    for (Real x : {peak, peak - kPi<Real>, peak + kPi<Real>})
-      if (x > 0 && x < w) {
-        Real v = phase.point_lobe(x);
-        hi = std::max(hi, v);
-        lo = std::min(lo, v);
-      }
-    ratio *= hi / lo;
-  }
+  Real ratio = SegmentLobeRangeRatio(dom, phase) * PointLobeRangeRatio(dom, phase);
   return ratio > 0 ? ratio : std::numeric_limits<Real>::infinity();  // NaN (0 / 0) too
+}
+
+// For a clamped-cosine point lobe (a diffuse surface), W Int c^2 / (Int c)^2 over the
+// interval of width W, in closed form: c = max(cos phi, 0), phi = delta - theta_e, and the
+// interval (at most pi wide) meets at most one window |phi - 2 pi k| < pi / 2. Infinity
+// when the lobe is zero over the whole interval.
+template <typename Real>
+double ClampedCosineSecondMoment(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  double w = double(dom.width()), a = -double(phase.theta_e_offset()), i1 = 0, i2 = 0;
+  const double pi = 3.14159265358979323846;
+  for (int k = -1; k <= 1; ++k) {
+    double lo = std::max(a, 2 * pi * k - pi / 2), hi = std::min(a + w, 2 * pi * k + pi / 2);
+    if (!(hi > lo)) continue;
+    lo -= 2 * pi * k;
+    hi -= 2 * pi * k;
+    i1 += std::sin(hi) - std::sin(lo);
+    i2 += (hi - lo) / 2 + (std::sin(2 * hi) - std::sin(2 * lo)) / 4;
+  }
+  return i1 > 0 ? w * i2 / (i1 * i1) : std::numeric_limits<double>::infinity();
 }
 
 // The ratio of the transmittance (along the segment and on to p) between tmin and tmax:
@@ -94,11 +125,12 @@ struct AutoRule {
   // synthetic map (docs/bench.md); Novák's fit of the phases alone is as close.
   static constexpr double kFitResidual = 0.05;
 
-  // Predicted (1 + relative variance) x cost of each model, from the two ratios.
-  static std::array<double, 3> Scores(double phase_ratio, double transmittance_ratio) {
+  // Predicted (1 + relative variance) x cost of each model, from equiangular's predicted
+  // second moment W Int f^2 / (Int f)^2 and the transmittance's ratio.
+  static std::array<double, 3> Scores(double equiangular_moment, double transmittance_ratio) {
     double fit = 1 + kFitResidual;
-    return {(1 + UniformVarianceBound(phase_ratio * transmittance_ratio)) * kCost[0],
-            (1 + UniformVarianceBound(transmittance_ratio)) * fit * kCost[1], fit * kCost[2]};
+    return {equiangular_moment * kCost[0], (1 + UniformVarianceBound(transmittance_ratio)) * fit * kCost[1],
+            fit * kCost[2]};
   }
   static AutoModel Cheapest(const std::array<double, 3>& score) {
     std::size_t best = 0;
@@ -106,9 +138,29 @@ struct AutoRule {
       if (score[k] < score[best]) best = k;  // ties keep the cheaper model
     return AutoModel(best);
   }
-  // No fit can beat equiangular sampling when even a perfect one (relative variance 0) at
-  // the cheapest fit's cost would not: then the lobes need not be looked at.
+  // Equiangular's second moment is at least 1 + B(rho_T) by every predictor below, so when
+  // FullProduct beats that floor the lobes need not be looked at; and at most
+  // 1 + B(rho), rho any bound of the whole target's ratio, so when that loses to no fit's
+  // best case (relative variance 0 at Novák's cost) neither.
+  static bool FullProductSuffices(double transmittance_ratio) {
+    return Cheapest(Scores(1 + UniformVarianceBound(transmittance_ratio), transmittance_ratio)) ==
+           AutoModel::FullProduct;
+  }
   static bool EquiangularSuffices(double ratio) { return 1 + UniformVarianceBound(ratio) <= kCost[1]; }
+
+  // Equiangular's predicted second moment: Kantorovich's bound on the whole target's ratio;
+  // for a clamped-cosine point lobe also the cosine's exact moment times the squared ratios
+  // of the other factors (f <= max(others) c and f >= min(others) c), which stays finite
+  // where the cosine vanishes inside the interval. The smaller of the two upper bounds.
+  template <typename Real>
+  static double EquiangularMoment(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase,
+                                  double transmittance_ratio) {
+    double segment = double(SegmentLobeRangeRatio(dom, phase));
+    double moment = 1 + UniformVarianceBound(double(PhaseRangeRatio(dom, phase)) * transmittance_ratio);
+    if (phase.point_kind() == LobeKind::ClampedCosine)
+      moment = std::min(moment, Sqr(segment * transmittance_ratio) * ClampedCosineSecondMoment(dom, phase));
+    return moment;
+  }
 };
 
 template <typename R>
@@ -132,8 +184,8 @@ class AutoAngle {
  private:
   using Dist = std::variant<UniformAngle<Real>, NovakFit, FullFit>;  // in AutoModel's order
 
-  // The rule: first a bound that needs neither geometry nor trigonometry, then the exact
-  // ratios; the phase product built for them is the one Novák's fit uses.
+  // The rule: first the two early-outs, which need no lobe evaluated, then the exact ratios;
+  // the phase product built for them is the one Novák's fit uses.
   static Dist Make(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
     double transmittance = double(TransmittanceRangeRatio(q));
     double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
@@ -141,8 +193,9 @@ class AutoAngle {
                                                             : std::numeric_limits<double>::infinity();
     if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point * transmittance))
       return Dist(std::in_place_index<0>, q, dom);
+    if (AutoRule::FullProductSuffices(transmittance)) return Dist(std::in_place_index<2>, q, dom);
     PhaseProduct<Real> phase(q, dom);
-    switch (AutoRule::Cheapest(AutoRule::Scores(double(PhaseRangeRatio(dom, phase)), transmittance))) {
+    switch (AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, phase, transmittance), transmittance))) {
       case AutoModel::Novak: return Dist(std::in_place_index<1>, phase, dom.width());
       case AutoModel::FullProduct: return Dist(std::in_place_index<2>, q, dom);
       case AutoModel::Equiangular: break;
