@@ -3,7 +3,7 @@
 // (Kulla and Fajardo 2012), Novák's phase fit (Novák et al. 2012) or the FullProduct fit,
 // whichever minimises the predicted (1 + relative variance) x cost of one gather
 // (docs/maths.md#auto). The prediction needs no fitted target: a few lobe values and two
-// distances, so a query that keeps equiangular sampling pays almost nothing for the choice.
+// distances, and most queries are decided before any lobe is evaluated.
 //
 // The predictor: for a target f with m <= f <= M, sampling any density p gives a weight
 // f / p whose relative variance is at most (rho - 1)^2 / (4 rho), rho = max / min of f / p
@@ -138,14 +138,15 @@ struct AutoRule {
       if (score[k] < score[best]) best = k;  // ties keep the cheaper model
     return AutoModel(best);
   }
-  // Equiangular's second moment is at least 1 + B(rho_T) by every predictor below, so when
-  // FullProduct beats that floor the lobes need not be looked at; and at most
-  // 1 + B(rho), rho any bound of the whole target's ratio, so when that loses to no fit's
-  // best case (relative variance 0 at Novák's cost) neither.
+  // The early-outs, which look at no lobe and never change a decision. Every prediction of
+  // equiangular's second moment is at least 1 + B(rho_T), so FullProduct wins whenever it
+  // beats that floor and Novák (whose score depends on rho_T alone).
   static bool FullProductSuffices(double transmittance_ratio) {
     return Cheapest(Scores(1 + UniformVarianceBound(transmittance_ratio), transmittance_ratio)) ==
            AutoModel::FullProduct;
   }
+  // Equiangular wins whenever 1 + B(rho), rho any bound of the whole target's ratio, is no
+  // more than the cheapest fit's best case (relative variance 0 at Novák's cost).
   static bool EquiangularSuffices(double ratio) { return 1 + UniformVarianceBound(ratio) <= kCost[1]; }
 
   // Equiangular's predicted second moment: Kantorovich's bound on the whole target's ratio;
