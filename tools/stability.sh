@@ -56,13 +56,14 @@ NOTES
   echo
   echo "For each scene and g, the gather queries its render dumped (docs/accuracy_scenes/, about 1000 per"
   echo "run; how they were chosen: [accuracy_scenes.md](accuracy_scenes.md)): the largest weight"
-  echo "f / (p1 p2 I) of the two-step estimator (step one by VrlPoint, or by VrlMarginal: \`+marginal\`;"
-  echo "I the query's integral by quadrature) over a $grid x $grid stratified grid of sample pairs per query,"
-  echo "the largest over the queries (\`$accuracy --queries FILE --weight-grid $grid\`). A sample"
-  echo "maximum, so a lower bound of each method's supremum; 1 is a perfect estimator."
+  echo "f / (p1 p2 I) of the two-step estimator (step one by VrlPoint, or by VrlMarginal: \`+marginal\`)"
+  echo "over a $grid x $grid stratified grid of sample pairs per query, the largest over the queries"
+  echo "(\`$accuracy --queries FILE --largest-weights $grid\`). I, the query's integral, is the mean weight"
+  echo "of the VrlPoint methods' grids (each an unbiased estimate of it). A sample maximum, so a lower bound"
+  echo "of each method's supremum; 1 is a perfect estimator."
   echo
   for f in docs/accuracy_scenes/*.qlog; do
-    "$accuracy" --queries "$f" --weight-grid "$grid" --json "$scratch/$(basename "$f" .qlog).json" >/dev/null
+    "$accuracy" --queries "$f" --largest-weights "$grid" --json "$scratch/$(basename "$f" .qlog).json" >/dev/null
   done
   /usr/bin/python3 - "$scratch" <<'TABLE'
 import json, pathlib, re, sys
