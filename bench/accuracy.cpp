@@ -16,8 +16,16 @@
 // so the image-weighted relative variance is sum (w I)^2 relvar / sum (w I)^2. It also
 // reports how concentrated those weights are and which queries carry the most.
 //
+// Largest weights (--queries FILE --largest-weights N): per gather method (every camera
+// sampler with either step one), the largest weight f / (p1 p2) relative to the query's
+// integral I over an N x N stratified grid of (u_vrl, u_camera), the largest over the
+// queries (docs/stability.md). A sample maximum, so a lower bound of the supremum. I is the
+// mean weight of the step-one-VrlPoint methods' grids (each an unbiased estimate of it; with
+// N = 32 its relative error is far below the table's precision), so no quadrature is needed.
+//
 //   vrlis_accuracy [--pairs N] [--seed S] [--threads T] [--json FILE] [--inner-tol X] [--outer-tol X]
 //   vrlis_accuracy --queries FILE [--seed S] [--threads T] [--json FILE] [--top N] ...
+//   vrlis_accuracy --queries FILE --largest-weights N [--threads T] [--json FILE]
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -237,7 +245,8 @@ Json HardShare(const std::vector<Config<double>>& configs, const std::vector<Res
   std::fprintf(code ? stderr : stdout,
                "usage: vrlis_accuracy [--pairs N=256] [--seed S] [--threads T=2] [--json FILE]\n"
                "                      [--inner-tol X=1e-9] [--outer-tol X=1e-7]\n"
-               "       vrlis_accuracy --queries FILE [--top N=8] [--seed S] [--threads T] [--json FILE] ...\n");
+               "       vrlis_accuracy --queries FILE [--top N=8] [--seed S] [--threads T] [--json FILE] ...\n"
+               "       vrlis_accuracy --queries FILE --largest-weights N [--threads T] [--json FILE]\n");
   std::exit(code);
 }
 
@@ -395,10 +404,68 @@ int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads
   return 0;
 }
 
+int RunLargestWeights(const std::string& path, int grid, int threads, const std::string& json_path) {
+  std::string error;
+  auto records = vrli::ReadQueryLog(path, &error);
+  if (!records) Fail(error);
+  if (records->empty()) Fail("'" + path + "' holds no queries");
+  std::vector<vrlis::GatherMethod> methods;
+  for (auto vrl : vrlis::kStepOnes)
+    for (auto camera : vrlis::kMethods) methods.push_back({camera, vrl});
+  // Per query and method: the largest weight and the sum of weights over the grid.
+  std::vector<std::vector<double>> largest(records->size()), sum(records->size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next++) < records->size();) {
+      vrlis::MediumGatherQuery<double> q = Config<float>{(*records)[i].query, 0.5f, 0.5f}.as<double>().query;
+      for (vrlis::GatherMethod m : methods) {
+        double worst = 0, total = 0;
+        for (int a = 0; a < grid; ++a)
+          for (int b = 0; b < grid; ++b) {
+            double w = vrlis::SampleMediumGather(m, q, (a + 0.5) / grid, (b + 0.5) / grid).weight;
+            worst = std::max(worst, w);
+            total += w;
+          }
+        largest[i].push_back(worst);
+        sum[i].push_back(total);
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+
+  std::vector<double> worst(methods.size(), 0.0);
+  int used = 0;
+  for (std::size_t i = 0; i < records->size(); ++i) {
+    double total = 0;
+    int count = 0;
+    for (std::size_t k = 0; k < methods.size(); ++k)
+      if (methods[k].vrl == vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>()) {
+        total += sum[i][k];
+        count += grid * grid;
+      }
+    double integral = total / count;
+    if (!(integral > 0)) continue;  // no method finds anything: nothing to weigh against
+    ++used;
+    for (std::size_t k = 0; k < methods.size(); ++k) worst[k] = std::max(worst[k], largest[i][k] / integral);
+  }
+  Json out = {{"tool", "vrlis_accuracy"}, {"queries", path}, {"records", records->size()}, {"weighed", used},
+              {"grid", grid}};
+  std::printf("Largest weight f / (p1 p2 I) over %d queries of %s, %d x %d stratified pairs each:\n", used, path.c_str(),
+              grid, grid);
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    out["largest_weight"][vrlis::Name(methods[k])] = worst[k];
+    std::printf("  %-28s %.3g\n", vrlis::Name(methods[k]).c_str(), worst[k]);
+  }
+  if (!WriteJson(json_path, out)) Fail("cannot write " + json_path);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  int pairs = 256, threads = 2, top = 8;
+  int pairs = 256, threads = 2, top = 8, largest_weights = 0;
   std::uint64_t seed = kDefaultSeed;
   std::string json_path, queries;
   QuadratureSettings settings;
@@ -424,12 +491,14 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--json")) json_path = value();
     else if (!std::strcmp(argv[i], "--queries")) queries = value();
     else if (!std::strcmp(argv[i], "--top")) top = to_int(value());
+    else if (!std::strcmp(argv[i], "--largest-weights")) largest_weights = to_int(value());
     else if (!std::strcmp(argv[i], "--inner-tol")) settings.inner_tol = to_double(value());
     else if (!std::strcmp(argv[i], "--outer-tol")) settings.outer_tol = to_double(value());
     else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) Usage(0);
     else Usage(2);
   }
-  if (pairs < 1 || threads < 1 || top < 0 || !(settings.inner_tol > 0) || !(settings.outer_tol > 0)) Usage(2);
+  if (pairs < 1 || threads < 1 || top < 0 || largest_weights < 0 || (largest_weights > 0 && queries.empty()) || !(settings.inner_tol > 0) || !(settings.outer_tol > 0)) Usage(2);
+  if (largest_weights > 0) return RunLargestWeights(queries, largest_weights, threads, json_path);
   return queries.empty() ? RunSynthetic(pairs, seed, threads, settings, json_path)
                          : RunQueries(queries, top, seed, threads, settings, json_path);
 }

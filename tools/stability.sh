@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
-# Builds vrlis_stability (tests/stability; the `release` preset) and writes the stability
-# table of the samplers as Markdown to stdout and to docs/stability.md (with the date, machine
-# and command).
+# Builds vrlis_stability (tests/stability) and vrlis_accuracy (bench; the `release` preset)
+# and writes the stability tables of the samplers as Markdown to stdout and to
+# docs/stability.md (with the date, machine and command): the hard cases, then the largest
+# weight of every gather method on each scene's dumped queries (docs/accuracy_scenes/*.qlog,
+# written by tools/accuracy_scenes.sh).
 # Usage: tools/stability.sh [samples=100000]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 samples="${1:-100000}"
 tools/deps.sh
 cmake --preset release >/dev/null
-cmake --build --preset release --target vrlis_stability >/dev/null
+cmake --build --preset release --target vrlis_stability vrlis_accuracy >/dev/null
 tool=build/tests/stability/vrlis_stability
+accuracy=build/bench/vrlis_accuracy
+grid=32
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
 {
   echo "# Stability of the samplers under adversarial input"
   echo
@@ -45,6 +51,33 @@ How to read the hard cases:
 
 NOTES
   "$tool" "$samples"
+  echo
+  echo "## The scenes' own queries: largest weight of the whole estimator"
+  echo
+  echo "For each scene and g, the gather queries its render dumped (docs/accuracy_scenes/, about 1000 per"
+  echo "run; how they were chosen: [accuracy_scenes.md](accuracy_scenes.md)): the largest weight"
+  echo "f / (p1 p2 I) of the two-step estimator (step one by VrlPoint, or by VrlMarginal: \`+marginal\`)"
+  echo "over a $grid x $grid stratified grid of sample pairs per query, the largest over the queries"
+  echo "(\`$accuracy --queries FILE --largest-weights $grid\`). I, the query's integral, is the mean weight"
+  echo "of the VrlPoint methods' grids (each an unbiased estimate of it). A sample maximum, so a lower bound"
+  echo "of each method's supremum; 1 is a perfect estimator."
+  echo
+  for f in docs/accuracy_scenes/*.qlog; do
+    "$accuracy" --queries "$f" --largest-weights "$grid" --json "$scratch/$(basename "$f" .qlog).json" >/dev/null
+  done
+  /usr/bin/python3 - "$scratch" <<'TABLE'
+import json, pathlib, re, sys
+runs = []
+for p in pathlib.Path(sys.argv[1]).glob("*.json"):
+    scene, g = re.fullmatch(r"(.+)_g(-?[0-9.]+)", p.stem).groups()
+    runs.append((["bidirectional", "room", "cube", "corner"].index(scene), float(g), scene, json.loads(p.read_text())))
+runs.sort(key=lambda r: r[:2])
+methods = list(runs[0][3]["largest_weight"])
+print("| scene | g | queries | " + " | ".join(methods) + " |")
+print("|---|---|---|" + "---|" * len(methods))
+for _, g, scene, j in runs:
+    print(f"| {scene} | {g:g} | {j['records']} | " + " | ".join(f"{j['largest_weight'][m]:.3g}" for m in methods) + " |")
+TABLE
 } > docs/stability.md.tmp
 mv docs/stability.md.tmp docs/stability.md
 cat docs/stability.md

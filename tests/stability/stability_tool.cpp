@@ -172,6 +172,8 @@ template <typename Real>
 using Mix = vrlis::CauchyMixture<Real>;
 template <typename Real>
 using Full = vrlis::FullProduct<Real>;
+template <typename Real>
+using Auto = vrlis::Auto<Real>;
 
 void PrintTable(const std::string& title, const std::string& metric, const std::vector<Row>& rows,
                 const std::vector<std::string>& methods) {
@@ -195,7 +197,7 @@ void PrintTable(const std::string& title, const std::string& metric, const std::
 int main(int argc, char** argv) {
   int n = argc > 1 ? std::max(100, std::atoi(argv[1])) : 100000;
   auto start = std::chrono::steady_clock::now();
-  std::vector<std::string> methods = {"equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"};
+  std::vector<std::string> methods = {"equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product", "auto"};
   std::vector<Row> rows;
   for (const HardCase& hc : HardCases()) {
     Row row{hc.name, {}};
@@ -204,6 +206,7 @@ int main(int argc, char** argv) {
     Measure<Sum>("cauchy-sum", hc, row, n);
     Measure<Mix>("cauchy-mixture", hc, row, n);
     Measure<Full>("full-product", hc, row, n);
+    Measure<Auto>("auto", hc, row, n);
     rows.push_back(row);
   }
 

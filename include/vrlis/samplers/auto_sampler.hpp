@@ -1,83 +1,210 @@
 #pragma once
-// `auto`: no more model than a query needs. Per query, a cheap bound on equiangular
-// sampling's relative variance decides between equiangular sampling (Kulla and Fajardo
-// 2012) and the FullProduct fit (docs/maths.md#auto).
+// `auto`: no more model than a query pays for. Per query it picks equiangular sampling
+// (Kulla and Fajardo 2012), Novák's phase fit (Novák et al. 2012) or the FullProduct fit,
+// whichever minimises the predicted (1 + relative variance) x cost of one gather
+// (docs/maths.md#auto). The prediction needs no fitted target: a few lobe values and two
+// distances, and most queries are decided before any lobe is evaluated.
 //
-// The bound: for a target f with m <= f <= M on the interval, uniform sampling has relative
-// variance W Int f^2 / (Int f)^2 - 1 <= (M - m)^2 / (4 M m) (Kantorovich's inequality), a
-// function of the ratio rho = M / m alone. The target is a product of the segment lobe, the
-// point lobe and the transmittance, so rho is at most the product of their own ratios, each
-// exact and cheap: the segment lobe is monotone in theta (its cosine is -sin theta), the
-// point lobe is extreme at the interval's ends or at its peak or antipode when inside, and
-// the transmittance falls monotonically from tmin to tmax.
-//
-// The fit is kept where the bound exceeds kFitThreshold: a FullProduct gather costs about
-// twice an equiangular one (docs/bench.md), so the fit pays for itself once equiangular's
-// relative variance may exceed 1 (the two-step estimator's variance scales by 1 + V2).
-#include <optional>
+// The predictor: for a target f with m <= f <= M, sampling any density p gives a weight
+// f / p whose relative variance is at most (rho - 1)^2 / (4 rho), rho = max / min of f / p
+// (Kantorovich's inequality). For equiangular sampling f / p is the whole target, phases x
+// transmittance; for Novák's fit it is the transmittance (which the fit leaves out) times the
+// fit's own residual; for FullProduct the residual alone. The factors' extremes are exact and
+// cheap: the segment lobe is monotone in theta (its cosine is -sin theta), the point lobe is
+// extreme at the interval's ends or at its peak or antipode when inside, and the
+// transmittance falls monotonically from tmin to tmax.
+#include <array>
+#include <cmath>
+#include <limits>
 #include <string_view>
 #include <type_traits>
+#include <utility>
+#include <variant>
 
 #include "equiangular.hpp"
 #include "full_product.hpp"
+#include "novak.hpp"
 
 namespace vrlis {
 
-// An upper bound of the ratio max / min of the full target (phase product x transmittance)
-// over the query's angle interval; infinity when the target can vanish in it.
+// The ratio max / min of the segment lobe over the query's angle interval: it is monotone in
+// theta, so extreme at the ends.
 template <typename Real>
-Real TargetRangeRatio(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+Real SegmentLobeRangeRatio(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  Real s0 = phase.segment_lobe(0), s1 = phase.segment_lobe(dom.width());
+  return std::max(s0, s1) / std::min(s0, s1);
+}
+
+// The ratio max / min of the point lobe over the interval: extreme at the ends or at its peak
+// or antipode when inside; infinity when it vanishes there (a clamped cosine).
+template <typename Real>
+Real PointLobeRangeRatio(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  if (phase.point_lobe_flat()) return 1;
   Real w = dom.width();
-  Real s0 = phase.segment_lobe(0), s1 = phase.segment_lobe(w);
-  Real ratio = std::max(s0, s1) / std::min(s0, s1);
-  if (!phase.point_lobe_flat()) {
-    Real p0 = phase.point_lobe(0), p1 = phase.point_lobe(w), hi = std::max(p0, p1), lo = std::min(p0, p1);
-    Real peak = phase.point_peak();  // the peak (or, for g < 0, the backward peak) nearest the interval
-    for (Real x : {peak, peak - kPi<Real>, peak + kPi<Real>})
-      if (x > 0 && x < w) {
-        Real v = phase.point_lobe(x);
-        hi = std::max(hi, v);
-        lo = std::min(lo, v);
-      }
-    ratio *= hi / lo;
-  }
-  if (q.sigma_t > 0) {
-    if (!std::isfinite(q.tmax)) return std::numeric_limits<Real>::infinity();
-    // Optical depth from tmin to tmax along the segment plus the change of the distance to p.
-    Real depth = (q.tmax - q.tmin) + Length(q.point - (q.origin + q.tmax * q.dir)) -
-                 Length(q.point - (q.origin + q.tmin * q.dir));
-    ratio *= std::exp(q.sigma_t * std::max(depth, Real(0)));
-  }
+  Real p0 = phase.point_lobe(0), p1 = phase.point_lobe(w), hi = std::max(p0, p1), lo = std::min(p0, p1);
+  Real peak = phase.point_peak();  // the peak (or, for g < 0, the backward peak) nearest the interval
+  for (Real x : {peak, peak - kPi<Real>, peak + kPi<Real>})
+    if (x > 0 && x < w) {
+      Real v = phase.point_lobe(x);
+      hi = std::max(hi, v);
+      lo = std::min(lo, v);
+    }
+  return hi / lo;
+}
+
+// An upper bound of the ratio max / min of the phase product over the interval; infinity
+// when a lobe can vanish in it.
+template <typename Real>
+Real PhaseRangeRatio(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  Real ratio = SegmentLobeRangeRatio(dom, phase) * PointLobeRangeRatio(dom, phase);
   return ratio > 0 ? ratio : std::numeric_limits<Real>::infinity();  // NaN (0 / 0) too
 }
 
-// Kantorovich's bound on uniform sampling's relative variance for a target ratio rho.
+// For a clamped-cosine point lobe (a diffuse surface), W Int c^2 / (Int c)^2 over the
+// interval of width W, in closed form: c = max(cos phi, 0), phi = delta - theta_e, and the
+// interval (at most pi wide) meets at most one window |phi - 2 pi k| < pi / 2. Infinity
+// when the lobe is zero over the whole interval.
+template <typename Real>
+double ClampedCosineSecondMoment(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  double w = double(dom.width()), a = -double(phase.theta_e_offset()), i1 = 0, i2 = 0;
+  const double pi = 3.14159265358979323846;
+  for (int k = -1; k <= 1; ++k) {
+    double lo = std::max(a, 2 * pi * k - pi / 2), hi = std::min(a + w, 2 * pi * k + pi / 2);
+    if (!(hi > lo)) continue;
+    lo -= 2 * pi * k;
+    hi -= 2 * pi * k;
+    i1 += std::sin(hi) - std::sin(lo);
+    i2 += (hi - lo) / 2 + (std::sin(2 * hi) - std::sin(2 * lo)) / 4;
+  }
+  return i1 > 0 ? w * i2 / (i1 * i1) : std::numeric_limits<double>::infinity();
+}
+
+// The ratio of the transmittance (along the segment and on to p) between tmin and tmax:
+// exp(sigma_t x the growth of the optical depth); infinity on an unbounded segment.
+template <typename Real>
+Real TransmittanceRangeRatio(const SegmentQuery<Real>& q) {
+  if (!(q.sigma_t > 0)) return 1;
+  if (!std::isfinite(q.tmax)) return std::numeric_limits<Real>::infinity();
+  Real depth = (q.tmax - q.tmin) + Length(q.point - (q.origin + q.tmax * q.dir)) -
+               Length(q.point - (q.origin + q.tmin * q.dir));
+  return std::exp(q.sigma_t * std::max(depth, Real(0)));
+}
+
+// An upper bound of the ratio max / min of the whole target (phases x transmittance).
+template <typename Real>
+Real TargetRangeRatio(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase) {
+  return PhaseRangeRatio(dom, phase) * TransmittanceRangeRatio(q);
+}
+
+// The largest ratio a Henyey-Greenstein lobe reaches over all angles, ((1 + |g|) / (1 - |g|))^3:
+// a bound of a lobe's ratio on any interval that needs no geometry at all.
+template <typename Real>
+Real LobeRangeRatioBound(Real g) {
+  Real a = std::abs(g);
+  Real r = (1 + a) / (1 - a);
+  return a < 1 ? r * r * r : std::numeric_limits<Real>::infinity();
+}
+
+// Kantorovich's bound on the relative variance of a weight whose max / min ratio is rho.
 template <typename Real>
 Real UniformVarianceBound(Real rho) {
   return std::isfinite(rho) ? Sqr(rho - 1) / (4 * rho) : std::numeric_limits<Real>::infinity();
 }
 
+// The models `auto` chooses from, cheapest first.
+enum class AutoModel { Equiangular, Novak, FullProduct };
+
+// What auto's rule assumes (docs/maths.md#auto).
+struct AutoRule {
+  // Cost of one whole medium-to-medium gather estimate (step one, step two, integrand) with
+  // each camera sampler, relative to equiangular: the geometric mean over g of vrlis_bench's
+  // Estimator/<sampler> times in docs/bench.md (`tools/bench.sh`; 220, 422 and 577 ns).
+  static constexpr double kCost[] = {1.0, 1.92, 2.63};
+  // The relative variance a piecewise-linear fit leaves on the part of the target it models:
+  // FullProduct's camera-step median relative variance is at most 0.07 at every g of the
+  // synthetic map (docs/bench.md); Novák's fit of the phases alone is as close.
+  static constexpr double kFitResidual = 0.05;
+
+  // Predicted (1 + relative variance) x cost of each model, from equiangular's predicted
+  // second moment W Int f^2 / (Int f)^2 and the transmittance's ratio.
+  static std::array<double, 3> Scores(double equiangular_moment, double transmittance_ratio) {
+    double fit = 1 + kFitResidual;
+    return {equiangular_moment * kCost[0], (1 + UniformVarianceBound(transmittance_ratio)) * fit * kCost[1],
+            fit * kCost[2]};
+  }
+  static AutoModel Cheapest(const std::array<double, 3>& score) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < score.size(); ++k)
+      if (score[k] < score[best]) best = k;  // ties keep the cheaper model
+    return AutoModel(best);
+  }
+  // The early-outs, which look at no lobe and never change a decision. Every prediction of
+  // equiangular's second moment is at least 1 + B(rho_T), so FullProduct wins whenever it
+  // beats that floor and Novák (whose score depends on rho_T alone).
+  static bool FullProductSuffices(double transmittance_ratio) {
+    return Cheapest(Scores(1 + UniformVarianceBound(transmittance_ratio), transmittance_ratio)) ==
+           AutoModel::FullProduct;
+  }
+  // Equiangular wins whenever 1 + B(rho), rho any bound of the whole target's ratio, is no
+  // more than the cheapest fit's best case (relative variance 0 at Novák's cost).
+  static bool EquiangularSuffices(double ratio) { return 1 + UniformVarianceBound(ratio) <= kCost[1]; }
+
+  // Equiangular's predicted second moment: Kantorovich's bound on the whole target's ratio;
+  // for a clamped-cosine point lobe also the cosine's exact moment times the squared ratios
+  // of the other factors (f <= max(others) c and f >= min(others) c), which stays finite
+  // where the cosine vanishes inside the interval. The smaller of the two upper bounds.
+  template <typename Real>
+  static double EquiangularMoment(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase,
+                                  double transmittance_ratio) {
+    double segment = double(SegmentLobeRangeRatio(dom, phase));
+    double moment = 1 + UniformVarianceBound(double(PhaseRangeRatio(dom, phase)) * transmittance_ratio);
+    if (phase.point_kind() == LobeKind::ClampedCosine)
+      moment = std::min(moment, Sqr(segment * transmittance_ratio) * ClampedCosineSecondMoment(dom, phase));
+    return moment;
+  }
+};
+
 template <typename R>
 class AutoAngle {
  public:
   using Real = R;
-  static constexpr Real kFitThreshold = 1;
-  using Fit = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<FullProduct<Real>>().distribution())>>;
+  // The fits are the registered samplers' own (Novák: 10 nodes, FullProduct: 8).
+  using NovakFit = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<Novak<Real>>().distribution())>>;
+  using FullFit = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<FullProduct<Real>>().distribution())>>;
 
-  AutoAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : uniform_(q, dom) {
-    FullProductTarget<Real> target(q, dom);  // built once: the bound reads its lobes, the fit uses it
-    if (UniformVarianceBound(TargetRangeRatio(q, dom, target.phase())) > kFitThreshold) fit_.emplace(target, dom.width());
+  AutoAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : dist_(Make(q, dom)) {}
+
+  AutoModel model() const { return AutoModel(dist_.index()); }
+  Real sample(Real u) const { return std::visit([&](const auto& d) { return d.sample(u); }, dist_); }
+  Real pdf(Real delta) const { return std::visit([&](const auto& d) { return d.pdf(delta); }, dist_); }
+  Real cdf(Real delta) const { return std::visit([&](const auto& d) { return d.cdf(delta); }, dist_); }
+  SegmentSample<Real> sample_pdf(Real u) const {
+    return std::visit([&](const auto& d) { return d.sample_pdf(u); }, dist_);
   }
 
-  bool fitted() const { return fit_.has_value(); }
-  Real sample(Real u) const { return fit_ ? fit_->sample(u) : uniform_.sample(u); }
-  Real pdf(Real delta) const { return fit_ ? fit_->pdf(delta) : uniform_.pdf(delta); }
-  Real cdf(Real delta) const { return fit_ ? fit_->cdf(delta) : uniform_.cdf(delta); }
-  SegmentSample<Real> sample_pdf(Real u) const { return fit_ ? fit_->sample_pdf(u) : uniform_.sample_pdf(u); }
-
  private:
-  UniformAngle<Real> uniform_;
-  std::optional<Fit> fit_;
+  using Dist = std::variant<UniformAngle<Real>, NovakFit, FullFit>;  // in AutoModel's order
+
+  // The rule: first the two early-outs, which need no lobe evaluated, then the exact ratios;
+  // the phase product built for them is the one Novák's fit uses.
+  static Dist Make(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
+    double transmittance = double(TransmittanceRangeRatio(q));
+    double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
+                   : q.lobe.kind == LobeKind::None          ? 1.0
+                                                            : std::numeric_limits<double>::infinity();
+    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point * transmittance))
+      return Dist(std::in_place_index<0>, q, dom);
+    if (AutoRule::FullProductSuffices(transmittance)) return Dist(std::in_place_index<2>, q, dom);
+    PhaseProduct<Real> phase(q, dom);
+    switch (AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, phase, transmittance), transmittance))) {
+      case AutoModel::Novak: return Dist(std::in_place_index<1>, phase, dom.width());
+      case AutoModel::FullProduct: return Dist(std::in_place_index<2>, q, dom);
+      case AutoModel::Equiangular: break;
+    }
+    return Dist(std::in_place_index<0>, q, dom);
+  }
+
+  Dist dist_;
 };
 
 template <typename Real = float>
