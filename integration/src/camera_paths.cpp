@@ -35,10 +35,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (!found) break;
     const Material& mat = scene.materials[static_cast<std::size_t>(hit.material)];
     if (mat.IsSpecular()) {
-      Spectrum w;
-      Vec3f d = SampleSpecular(mat, ray.d, hit.n, rng.Uniform(), &w);
-      beta *= w;
-      ray = {hit.p, d};
+      BounceSpecular(mat, hit.p, hit.n, rng.Uniform(), &ray, &beta);
       if (depth + 1 >= tr.rr_depth) {
         float q = std::min(0.95f, beta.MaxComponent());
         if (!(rng.Uniform() < q)) break;

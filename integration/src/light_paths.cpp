@@ -68,10 +68,7 @@ void TracePath(const Scene& scene, const TransportSettings& tr, int index, int c
     const Material& mat = scene.materials[static_cast<std::size_t>(hit.material)];
     if (mat.IsSpecular()) {
       if (!tr.light_caustics && !scattered) return;
-      Spectrum w;
-      Vec3f d = SampleSpecular(mat, ray.d, hit.n, rng.Uniform(), &w);
-      beta *= w;
-      ray = {hit.p, d};
+      BounceSpecular(mat, hit.p, hit.n, rng.Uniform(), &ray, &beta);
     } else {
       Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
       beta *= mat.albedo;

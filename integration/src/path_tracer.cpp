@@ -39,10 +39,7 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
       if (!found) break;  // no emitter is ever seen directly: all lights are delta lights
       const Material& mat = scene_.materials[static_cast<std::size_t>(hit.material)];
       if (mat.IsSpecular()) {
-        Spectrum w;
-        Vec3f d = SampleSpecular(mat, ray.d, hit.n, rng.Uniform(), &w);
-        beta *= w;
-        ray = {hit.p, d};
+        BounceSpecular(mat, hit.p, hit.n, rng.Uniform(), &ray, &beta);
       } else {
         Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
         L += beta * DirectSurface(scene_, hit.p, nf, mat.albedo);

@@ -45,4 +45,13 @@ inline Vec3f SampleSpecular(const Material& m, Vec3f d, Vec3f n, float u, Spectr
   return Normalize(eta * d + (eta * cos_i - cos_t) * nf);
 }
 
+// A path's specular bounce at point p: the ray leaves p in the sampled direction and the
+// throughput takes the bounce's weight.
+inline void BounceSpecular(const Material& m, Vec3f p, Vec3f n, float u, Ray* ray, Spectrum* beta) {
+  Spectrum w;
+  Vec3f d = SampleSpecular(m, ray->d, n, u, &w);
+  *beta *= w;
+  *ray = {p, d};
+}
+
 }  // namespace vrli
