@@ -2,6 +2,7 @@
 // vrlis: importance sampling for anisotropic virtual ray lights. The whole core library.
 #include "core/phase.hpp"
 #include "core/query.hpp"
+#include "core/running_moments.hpp"
 #include "angle/angle_domain.hpp"
 #include "angle/phase_product.hpp"
 #include "angle/full_product.hpp"
