@@ -14,7 +14,10 @@
 //   clamped to the largest Real gets pdf 0). A sample with pdf 0 contributes nothing.
 // - invert(t) is the CDF of the sampled distribution, so invert(sample(u)) == u up to
 //   rounding for every sampler whose sample() is the CDF's inverse (all but CauchyMixture,
-//   which selects a component first; its round trip holds in distribution). When p lies on
+//   which selects a component first; its round trip holds in distribution). Rounding: u is
+//   among the CDF's values within a few ulps of t and of its angle offset; where the density
+//   changes by orders of magnitude within an ulp of t (a peak narrower than that ulp), that
+//   is far more than pdf(t) times an ulp. When p lies on
 //   the segment's line up to rounding (domain().on_line()), the density is a spike as wide
 //   as that rounding and the round trip holds only to the resolution of t.
 // - A segment shorter than min<Real> / epsilon<Real> (zero length included), or whose angle

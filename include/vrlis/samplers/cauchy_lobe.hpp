@@ -64,9 +64,15 @@ struct CauchyLobes {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
     // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
     Real extent = width + std::abs(peak), scale = 1 / (kPi<Real> * peak_value);
-    // So wide that it is constant over the interval to the last digit: a flat lobe.
-    if (!(extent >= scale * std::sqrt(std::numeric_limits<Real>::epsilon()))) return;
-    Real resolvable = 64 * std::numeric_limits<Real>::epsilon() * extent;
+    // Constant over the interval to the last digit, a flat lobe: so wide that it is over the
+    // whole extent, or so far from the interval that its relative change there (at most
+    // 2 width / distance) is below epsilon. The latter is no mere shortcut: there the
+    // primitives are ~ width scale / distance^2 and underflow to subnormals (float widths of
+    // ~1e-36 rad), whose few digits broke the round trip.
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    Real distance = peak < 0 ? -peak : std::max(peak - width, Real(0));
+    if (!(extent >= scale * std::sqrt(eps)) || 2 * width < eps * distance) return;
+    Real resolvable = 64 * eps * extent;
     lobe[count] = TruncatedCauchy<Real>(peak, std::max(scale, resolvable), width);
     from_segment[count++] = segment;
   }
