@@ -29,16 +29,8 @@ template <typename Real>
 SegmentQuery<Real> SurfaceQuery(const glm::vec<3, Real>& vrl_origin, const glm::vec<3, Real>& vrl_dir, Real tmin,
                                 Real tmax, const glm::vec<3, Real>& surface_point, const glm::vec<3, Real>& normal,
                                 Real g, Real sigma_t = 0) {
-  SegmentQuery<Real> q;
-  q.origin = FromGlm(vrl_origin);
-  q.dir = FromGlm(glm::normalize(vrl_dir));
-  q.tmin = tmin;
-  q.tmax = tmax;
-  q.g = g;
-  q.point = FromGlm(surface_point);
-  q.lobe = {LobeKind::ClampedCosine, FromGlm(glm::normalize(normal)), Real(0)};
-  q.sigma_t = sigma_t;
-  return q;
+  return MediumToSurfaceQuery(FromGlm(vrl_origin), FromGlm(glm::normalize(vrl_dir)), tmin, tmax,
+                              FromGlm(surface_point), FromGlm(glm::normalize(normal)), g, sigma_t);
 }
 
 // Step one: a point on the VRL vrl_origin + v vrl_dir, v in [0, length], for the camera line.

@@ -33,16 +33,12 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
   return vrl.flux * Connect(scene, seg.ray(t), vrl.origin + v * vrl.dir, f, transmittance);
 }
 
-Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
-                              const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
-  float u_vrl = rng.Uniform(), u_camera = rng.Uniform();
-  vrlis::MediumGatherQuery<float> q{SegmentOf(seg), SegmentOf(vrl), MediumOf(scene.medium)};
-  if (log) log->Record(q, RmsRgb(throughput * vrl.flux));
-  return vrl.flux * Connect(scene, vrlis::SampleMediumGather(method, q, u_vrl, u_camera));
-}
+namespace {
 
-Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
-                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput) {
+// The sum over the VRLs [first, last): the samplers are chosen and the camera segment and
+// medium validated once for all of them.
+Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
+                    const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   const bool valid = vrlis::Validate(camera) == vrlis::QueryError::None &&
@@ -51,15 +47,27 @@ Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, co
     using StepOne = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
     Spectrum sum;
-    for (const Vrl& vrl : vrls) {
+    for (const Vrl* vrl = first; vrl != last; ++vrl) {
       float u_vrl = rng.Uniform(), u_camera = rng.Uniform();
-      vrlis::MediumGatherQuery<float> q{camera, SegmentOf(vrl), medium};
-      if (log) log->Record(q, RmsRgb(throughput * vrl.flux));
+      vrlis::MediumGatherQuery<float> q{camera, SegmentOf(*vrl), medium};
+      if (log) log->Record(q, RmsRgb(throughput * vrl->flux));
       if (!valid || vrlis::Validate(q.vrl) != vrlis::QueryError::None) continue;
-      sum += vrl.flux * Connect(scene, vrlis::SampleMediumGather<StepOne, StepTwo>(vrlis::ValidQuery{}, q, u_vrl, u_camera));
+      sum += vrl->flux * Connect(scene, vrlis::SampleMediumGather<StepOne, StepTwo>(vrlis::ValidQuery{}, q, u_vrl, u_camera));
     }
     return sum;
   });
+}
+
+}  // namespace
+
+Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+                              const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
+  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput);
+}
+
+Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput) {
+  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput);
 }
 
 Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,

@@ -1,4 +1,4 @@
-// Issue 2: with g = 0 (and a point lobe that is isotropic or absent) every sampler is
+// With g = 0 (and a point lobe that is isotropic or absent) every sampler is
 // equiangular sampling, to rounding.
 #include <catch2/catch.hpp>
 

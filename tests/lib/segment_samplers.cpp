@@ -1,4 +1,4 @@
-// Issue 2: the statistical battery for every camera-segment sampler, in float and double,
+// The statistical battery for every camera-segment sampler, in float and double,
 // over every g, 20 random configurations per g and the hand-made hard ones.
 #include <catch2/catch.hpp>
 

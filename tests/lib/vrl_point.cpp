@@ -1,4 +1,4 @@
-// Issue 2 for VrlPoint: the density 1 / distance(y(v), camera line) on the VRL, random and
+// VrlPoint: the density 1 / distance(y(v), camera line) on the VRL, random and
 // hard configurations (parallel, near-parallel, intersecting lines, tiny h, long VRLs), in
 // float and double; and the two-step estimator of the medium-to-medium double integral.
 #include <catch2/catch.hpp>

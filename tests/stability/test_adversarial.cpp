@@ -1,4 +1,4 @@
-// Issue 6, the samplers under attack: every camera-segment sampler and VrlPoint, in float
+// The samplers under attack: every camera-segment sampler and VrlPoint, in float
 // and double, on the hard cases of reference.hpp and on random queries built from special
 // values, against the contract written in angle/segment_sampler.hpp and vrl_point.hpp.
 #include <catch2/catch.hpp>

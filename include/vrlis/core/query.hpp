@@ -40,16 +40,23 @@ struct SegmentQuery {
 template <typename Real>
 SegmentQuery<Real> MediumToMediumQuery(Vec3<Real> origin, Vec3<Real> dir, Real tmin, Real tmax, Vec3<Real> vrl_point,
                                        Vec3<Real> vrl_dir, Real g, Real sigma_t) {
-  SegmentQuery<Real> q;
-  q.origin = origin;
-  q.dir = dir;
-  q.tmin = tmin;
-  q.tmax = tmax;
-  q.g = g;
-  q.point = vrl_point;
-  q.lobe = {LobeKind::HenyeyGreenstein, vrl_dir, g};
-  q.sigma_t = sigma_t;
-  return q;
+  return {origin, dir, tmin, tmax, g, vrl_point, {LobeKind::HenyeyGreenstein, vrl_dir, g}, sigma_t};
+}
+
+// Medium to surface: the VRL origin + t dir, t in [tmin, tmax], seen from a diffuse surface
+// point with unit normal (facing the side the light arrives from); the VRL scatters with HG(g).
+template <typename Real>
+SegmentQuery<Real> MediumToSurfaceQuery(Vec3<Real> vrl_origin, Vec3<Real> vrl_dir, Real tmin, Real tmax,
+                                        Vec3<Real> surface_point, Vec3<Real> normal, Real g, Real sigma_t) {
+  return {vrl_origin, vrl_dir, tmin, tmax, g, surface_point, {LobeKind::ClampedCosine, normal, Real(0)}, sigma_t};
+}
+
+// A point light seen from the camera segment origin + t dir, t in [tmin, tmax], which
+// scatters with HG(g); the light's own lobe is isotropic.
+template <typename Real>
+SegmentQuery<Real> PointLightQuery(Vec3<Real> origin, Vec3<Real> dir, Real tmin, Real tmax, Vec3<Real> light, Real g,
+                                   Real sigma_t) {
+  return {origin, dir, tmin, tmax, g, light, {LobeKind::None, {}, Real(0)}, sigma_t};
 }
 
 // A sampled parameter along a segment (or a VRL) and its density with respect to it.

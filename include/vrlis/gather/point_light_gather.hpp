@@ -8,18 +8,11 @@
 
 namespace vrlis {
 
+// The camera step's query: the light seen from the camera segment.
 template <typename Real>
 SegmentQuery<Real> CameraStepQuery(const PointLightGatherQuery<Real>& q) {
-  SegmentQuery<Real> s;
-  s.origin = q.camera.origin;
-  s.dir = q.camera.dir;
-  s.tmin = q.camera.tmin;
-  s.tmax = q.camera.tmax;
-  s.g = q.medium.g;
-  s.point = q.light;
-  s.lobe = {LobeKind::None, {}, Real(0)};
-  s.sigma_t = q.medium.sigma_t;
-  return s;
+  return PointLightQuery(q.camera.origin, q.camera.dir, q.camera.tmin, q.camera.tmax, q.light, q.medium.g,
+                         q.medium.sigma_t);
 }
 
 template <typename Real>

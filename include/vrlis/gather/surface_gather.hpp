@@ -12,16 +12,8 @@ namespace vrlis {
 // The VRL seen from the surface point: the query the VRL sampler is built from.
 template <typename Real>
 SegmentQuery<Real> VrlStepQuery(const SurfaceGatherQuery<Real>& q) {
-  SegmentQuery<Real> s;
-  s.origin = q.vrl.origin;
-  s.dir = q.vrl.dir;
-  s.tmin = 0;
-  s.tmax = q.vrl.length;
-  s.g = q.medium.g;
-  s.point = q.point;
-  s.lobe = {LobeKind::ClampedCosine, q.normal, Real(0)};
-  s.sigma_t = q.medium.sigma_t;
-  return s;
+  return MediumToSurfaceQuery(q.vrl.origin, q.vrl.dir, Real(0), q.vrl.length, q.point, q.normal, q.medium.g,
+                              q.medium.sigma_t);
 }
 
 template <typename Real>

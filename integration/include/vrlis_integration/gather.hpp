@@ -18,7 +18,8 @@ struct CameraSegment {
   Interval iv;
 };
 
-// Radiance along the camera ray from light scattered at a VRL point and again on the segment.
+// Radiance along the camera ray from light scattered at a VRL point and again on the segment
+// (the single-VRL form of the sum below, which the comparison uses per VRL).
 // With a log, the query is offered to it with the weight throughput x flux (query_log.hpp).
 Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
