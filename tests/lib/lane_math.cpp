@@ -38,3 +38,49 @@ TEST_CASE("RsqrtLanes<float> is within 2 ulp over the normal floats", "[lib][lan
   }
   CHECK(worst <= 2 * ulp);
 }
+
+namespace {
+// |got - exact| in units of the float ulp at exact (exact from double).
+double FloatUlps(float got, double exact) {
+  if (exact == 0) return got == 0 ? 0 : std::numeric_limits<double>::infinity();
+  return std::abs(got - exact) / std::ldexp(1.0, std::ilogb(exact) - 23);
+}
+}  // namespace
+
+TEST_CASE("Log1pLanes<float> is within 1 ulp from -1 to float's largest, and keeps its special values",
+          "[lib][lane_math]") {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> mantissa(1.0f, 2.0f);
+  double worst = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    // Magnitudes 2^-150 .. 2^127 of either sign, negative ones inside (-1, 0).
+    float x = std::ldexp(mantissa(rng), i % 278 - 150);
+    if (i & 1) x = x < 1 ? -x : -std::ldexp(mantissa(rng), -1 - i % 30);
+    worst = std::max(worst, FloatUlps(vrlis::Log1pLanes(x), std::log1p(double(x))));
+  }
+  CHECK(worst <= 1);
+  const float inf = std::numeric_limits<float>::infinity();
+  CHECK(vrlis::Log1pLanes(-1.0f) == -inf);
+  CHECK(std::isnan(vrlis::Log1pLanes(-1.5f)));
+  CHECK(vrlis::Log1pLanes(inf) == inf);
+  CHECK(std::isnan(vrlis::Log1pLanes(std::numeric_limits<float>::quiet_NaN())));
+  CHECK(vrlis::Log1pLanes(1e-40f) == 1e-40f);  // subnormal: log1p(x) = x
+}
+
+TEST_CASE("Expm1Lanes<float> is within 2 ulp over its finite range, relative for tiny x, and saturates",
+          "[lib][lane_math]") {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> wide(-25.0f, 88.72f), mantissa(1.0f, 2.0f);
+  double worst = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    float x = i % 3 ? wide(rng) : std::ldexp(mantissa(rng), i % 150 - 150) * (i & 1 ? -1.0f : 1.0f);  // below 1 in magnitude
+    worst = std::max(worst, FloatUlps(vrlis::Expm1Lanes(x), std::expm1(double(x))));
+  }
+  CHECK(worst <= 2);
+  const float inf = std::numeric_limits<float>::infinity();
+  CHECK(vrlis::Expm1Lanes(89.0f) == inf);
+  CHECK(vrlis::Expm1Lanes(inf) == inf);
+  CHECK(vrlis::Expm1Lanes(-inf) == -1);
+  CHECK(vrlis::Expm1Lanes(-30.0f) == -1);
+  CHECK(std::isnan(vrlis::Expm1Lanes(std::numeric_limits<float>::quiet_NaN())));
+}

@@ -14,9 +14,13 @@
 // terms and relative for sin near 0 (tests/lib/sincos.cpp checks both against double over
 // |x| <= 100). Valid for |x| < 4e6 (the rounding trick below), accurate for |x| <= 1e4;
 // every caller passes angles of a few pi.
+//
+// Log1pLanes and Expm1Lanes serve the hot path's hyperbolic functions (the VRL point of
+// step one), where glibc's log1pf and expm1f took a quarter of a gather; see each below.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 namespace vrlis {
@@ -76,6 +80,73 @@ template <typename Real>
     float half = 0.5f * x;
     for (int i = 0; i < 3; ++i) y = y * (1.5f - half * y * y);
     return y;
+  }
+}
+
+namespace detail {
+inline float FloatFromBits(std::uint32_t bits) {
+  float x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+inline std::uint32_t BitsOfFloat(float x) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
+}
+// ln 2 = kLn2Hi + kLn2Lo, kLn2Hi with 16 significant bits, so that k kLn2Hi is exact for |k| < 256.
+constexpr float kLn2Hi = 0.693145751953125f, kLn2Lo = 1.42860682030941723212e-6f;
+}  // namespace detail
+
+// log(1 + x) for x >= -1 (-1 gives -inf, below it NaN, +inf and NaN pass through).
+// u = 1 + x is rounded; its rounding error c = (1 + x) - u is exact (Fast2Sum) and adds
+// c / u. u = 2^k m with m in [sqrt(1/2), sqrt(2)), f = m - 1 exact, s = f / (2 + f) and
+// log m = 2 atanh s = f - f^2/2 + s (f^2/2 + R), R = 2 s^2/3 + 2 s^4/5 + ... (Taylor; |s| < 0.172,
+// so the terms after s^8 are below 1e-9 of the result): the large term f is exact and the
+// rest a small correction, within 1 ulp (tests/lib/lane_math.cpp).
+template <typename Real>
+[[gnu::always_inline]] inline Real Log1pLanes(Real x) {
+  if constexpr (!std::is_same_v<Real, float>) {
+    return std::log1p(x);
+  } else {
+    float u = 1 + x;
+    float c = (x > 1 ? 1 - (u - x) : x - (u - 1)) / u;
+    std::uint32_t bits = detail::BitsOfFloat(u);
+    // The exponent of u relative to sqrt(1/2)'s, as an arithmetic shift of a signed difference.
+    std::int32_t k = static_cast<std::int32_t>(bits - 0x3f3504f3u) >> 23;
+    float f = detail::FloatFromBits(bits - (static_cast<std::uint32_t>(k) << 23)) - 1;
+    float s = f / (2 + f), z = s * s;
+    float r = z * (0.66666667f + z * (0.4f + z * (0.28571429f + z * 0.22222222f)));
+    float half_f2 = 0.5f * f * f, kf = static_cast<float>(k);
+    float log = kf * detail::kLn2Hi + (f - (half_f2 - (s * (half_f2 + r) + (kf * detail::kLn2Lo + c))));
+    // Outside (0, inf) u is -1's image (-inf), below it (NaN), +inf or NaN.
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    return u > 0 && u < kInf ? log : (u == 0 ? -kInf : (u > 0 ? u : std::numeric_limits<float>::quiet_NaN()));
+  }
+}
+
+// exp(x) - 1. x = k ln 2 + r with |r| <= ln(2)/2, expm1(r) by its Taylor series to r^8 (the
+// rest is below 6e-10 of it), then 2^k (1 + p) - 1 = 2^k p + (2^k - 1), whose second term is
+// exact for k <= 24; above, 2^(k - 1) (1 + p) 2 - 1, which overflows to +inf past float's range
+// as it should. x is clamped to [-20, 88.8] first (expm1 is -1 in float below -17.4 and
+// overflows above 88.73), which keeps 2^k normal. NaN passes through. Within 2 ulp
+// (tests/lib/lane_math.cpp), relative for tiny x.
+template <typename Real>
+[[gnu::always_inline]] inline Real Expm1Lanes(Real x) {
+  if constexpr (!std::is_same_v<Real, float>) {
+    return std::expm1(x);
+  } else {
+    float xc = x < -20.0f ? -20.0f : (x > 88.8f ? 88.8f : x);
+    constexpr float kShift = 12582912.0f;  // 1.5 * 2^23: rounds to an integer left in the low bits
+    float shifted = xc * 1.44269504f + kShift;
+    float kf = shifted - kShift;
+    std::int32_t k = static_cast<std::int32_t>(detail::BitsOfFloat(shifted) - detail::BitsOfFloat(kShift));
+    float r = (xc - kf * detail::kLn2Hi) - kf * detail::kLn2Lo;
+    float p = r + r * r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f + r * (8.3333333e-3f +
+                                      r * (1.3888889e-3f + r * (1.9841270e-4f + r * 2.4801587e-5f))))));
+    float scale = detail::FloatFromBits(static_cast<std::uint32_t>(k + 127) << 23);
+    float half_scale = detail::FloatFromBits(static_cast<std::uint32_t>(k + 126) << 23);
+    return kf <= 24 ? scale * p + (scale - 1) : half_scale * (1 + p) * 2 - 1;
   }
 }
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "lane_math.hpp"
+
 namespace vrlis {
 
 template <typename Real>
@@ -57,7 +59,7 @@ Real AsinhDifference(Real xa, Real dx) {
   }
   Real sa = std::sqrt(1 + xa * xa), sb = std::sqrt(1 + xb * xb);
   Real xa_plus_sa = xa >= 0 ? xa + sa : 1 / (sa - xa);
-  return std::log1p(dx * (1 + (xa + xb) / (sa + sb)) / xa_plus_sa);
+  return Log1pLanes(dx * (1 + (xa + xb) / (sa + sb)) / xa_plus_sa);
 }
 
 // The smallest positive distance we trust for a quantity computed from coordinates of

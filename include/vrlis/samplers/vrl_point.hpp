@@ -67,9 +67,10 @@ class VrlPoint {
     Real sin_a = Length(cross);
     Real along = Dot(d, q.dir);
     if (!(sin_a > 0)) return;  // parallel: uniform
-    Real h = std::abs(Dot(d, cross)) / sin_a;
+    Real inv_sin_a = 1 / sin_a;
+    Real h = std::abs(Dot(d, cross)) * inv_sin_a;
     h = std::max(h, NoiseFloor(Length(d) + std::abs(tmin_) + std::abs(tmax_)));
-    Real v0 = (along - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) / Sqr(sin_a);
+    Real v0 = (along - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) * Sqr(inv_sin_a);
     k_ = sin_a / h;
     // The density varies by at most k L / 2 over the VRL: below epsilon it is uniform, and
     // the asinh difference of a subnormal k L would have no digits left.
@@ -78,7 +79,21 @@ class VrlPoint {
       return;
     }
     xa_ = k_ * (tmin_ - v0);
-    total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
+    Real xb = xa_ + k_ * (tmax_ - tmin_);
+    // Sampling walks outward from the point of the VRL nearest the line that the samples
+    // reach first: tmin when x >= 0 throughout, tmax when x <= 0, else v0 with the masses
+    // on either side of it (so that no walk moves towards v0, where digits cancel).
+    if (xa_ >= 0) {
+      total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
+      walk_ = {tmin_, xa_, 0};
+    } else if (xb <= 0) {
+      total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
+      walk_ = {tmax_, -xb, total_};
+    } else {
+      Real left = AsinhDifference(Real(0), -xa_);
+      total_ = left + AsinhDifference(Real(0), xb);
+      walk_ = {v0, 0, left};
+    }
     if (!(total_ > 0) || !std::isfinite(total_)) k_ = 0;  // uniform to the last digit
   }
 
@@ -98,25 +113,15 @@ class VrlPoint {
     Real length = tmax_ - tmin_;
     if (!Representable()) return {tmin_, 0};
     if (k_ == 0) return {std::min(tmin_ + u * length, tmax_), 1 / length};
-    Real d = u * total_, xb = xa_ + k_ * length, v, root;  // root = sqrt(1 + x(v)^2)
-    if (xa_ >= 0) {  // moving away from v0 from the near end: no cancellation
-      Outward step(xa_, d);
-      v = tmin_ + step.dx / k_;
-      root = step.root;
-    } else if (xb <= 0) {
-      Outward step(-xb, total_ - d);
-      v = tmax_ - step.dx / k_;
-      root = step.root;
-    } else {  // v0 inside: asinh(x) is of moderate size, so the direct form keeps its digits
-      Real y = std::asinh(xa_) + d;
-      v = tmin_ + (std::sinh(y) - xa_) / k_;
-      root = std::cosh(y);
-    }
+    // e: the mass from the walk's start to the sample, signed by the direction of the walk.
+    Real e = u * total_ - walk_.mass_before;
+    Outward step(walk_.x, std::abs(e));
+    Real v = walk_.start + std::copysign(step.dx, e) / k_;
     if (!(v >= tmin_ && v <= tmax_)) {  // clamped: the density where it lands
       v = Clamp(v, tmin_, tmax_);
       return {v, pdf(v)};
     }
-    return {v, k_ / (total_ * root)};
+    return {v, k_ / (total_ * step.root)};
   }
 
   Real invert(Real v) const {
@@ -137,7 +142,7 @@ class VrlPoint {
   struct Outward {
     Real dx, root;
     Outward(Real x0, Real d) {
-      Real e = std::expm1(d / 2), inv = 1 / (2 * (e + 1));
+      Real e = Expm1Lanes(d / 2), inv = 1 / (2 * (e + 1));
       Real sh_half = e * (e + 2) * inv, ch_half = 1 + e * e * inv;
       Real half = 2 * Sqr(sh_half), sh = 2 * sh_half * ch_half, r0 = std::sqrt(1 + x0 * x0);
       dx = x0 * half + r0 * sh;
@@ -148,6 +153,9 @@ class VrlPoint {
   Real tmin_, tmax_;
   QueryError error_;
   Real k_ = 0, xa_ = 0, total_ = 0;
+  struct Walk {
+    Real start, x, mass_before;  // where it starts, |x| there, the CDF there
+  } walk_{};
 };
 
 // Its entry in the run-time sampler tables (method.hpp).

@@ -62,8 +62,8 @@ class Rng {
   Rng(std::uint64_t seed, std::uint64_t pass, std::uint64_t index, StreamPurpose purpose)
       : pcg_(SplitMix64(seed ^ SplitMix64(pass + 0x51ed2701ull * static_cast<std::uint64_t>(purpose))),
              SplitMix64(index)) {}
-  // Uniform in [0, 1).
-  float Uniform() { return std::min(std::ldexp(static_cast<float>(pcg_() >> 8), -24), 0x1.fffffep-1f); }
+  // Uniform in [0, 1): 24 random bits are exact in a float, so the largest value is 1 - 2^-24.
+  float Uniform() { return static_cast<float>(pcg_() >> 8) * 0x1p-24f; }
 
  private:
   pcg32 pcg_;
