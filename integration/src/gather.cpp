@@ -36,7 +36,8 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 namespace {
 
 // The sum over the VRLs [first, last): the samplers are chosen and the camera segment and
-// medium validated once for all of them.
+// medium validated once for all of them, and the valid VRLs go to the library in batches
+// (its step one runs a batch as vector lanes).
 Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
@@ -46,13 +47,27 @@ Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const Camera
   return vrlis::WithGatherSamplers<float>(method, [&](auto step_one, auto step_two) {
     using StepOne = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
+    constexpr int kBatch = vrlis::kVrlPointBatch;
     Spectrum sum;
-    for (const Vrl* vrl = first; vrl != last; ++vrl) {
-      float u_vrl = rng.Uniform(), u_camera = rng.Uniform();
-      vrlis::MediumGatherQuery<float> q{camera, SegmentOf(*vrl), medium};
-      if (log) log->Record(q, RmsRgb(throughput * vrl->flux));
-      if (!valid || vrlis::Validate(q.vrl) != vrlis::QueryError::None) continue;
-      sum += vrl->flux * Connect(scene, vrlis::SampleMediumGather<StepOne, StepTwo>(vrlis::ValidQuery{}, q, u_vrl, u_camera));
+    for (const Vrl* chunk = first; chunk < last; chunk += kBatch) {
+      vrlis::VrlSegment<float> vrls[kBatch];
+      float u_vrl[kBatch], u_camera[kBatch];
+      const Vrl* source[kBatch];
+      int count = 0;
+      for (const Vrl* vrl = chunk; vrl != std::min(chunk + kBatch, last); ++vrl) {
+        float u1 = rng.Uniform(), u2 = rng.Uniform();  // drawn for every VRL: images do not depend on batching
+        vrlis::VrlSegment<float> segment = SegmentOf(*vrl);
+        if (log) log->Record({camera, segment, medium}, RmsRgb(throughput * vrl->flux));
+        if (!valid || vrlis::Validate(segment) != vrlis::QueryError::None) continue;
+        vrls[count] = segment;
+        u_vrl[count] = u1;
+        u_camera[count] = u2;
+        source[count++] = vrl;
+      }
+      vrlis::GatherSample<float> samples[kBatch];
+      vrlis::SampleMediumGathers<StepOne, StepTwo>(vrlis::ValidQuery{}, camera, medium, vrls, count, u_vrl, u_camera,
+                                                   samples);
+      for (int i = 0; i < count; ++i) sum += source[i]->flux * Connect(scene, samples[i]);
     }
     return sum;
   });

@@ -83,6 +83,37 @@ template <typename Real>
   }
 }
 
+// c ? a : b, with a and b both computed. A compiler that keeps floating-point exceptions
+// (GCC's default -ftrapping-math) will not compute an operand a branch skipped, so a
+// ternary between two computations keeps the loop scalar; this select is bit arithmetic
+// on values already computed, which vectorises.
+template <typename Real>
+[[gnu::always_inline]] inline Real SelectLanes(bool c, Real a, Real b) {
+  if constexpr (!std::is_same_v<Real, float>) {
+    return c ? a : b;
+  } else {
+    std::uint32_t mask = 0u - static_cast<std::uint32_t>(c), ab, bb;
+    std::memcpy(&ab, &a, sizeof ab);
+    std::memcpy(&bb, &b, sizeof bb);
+    std::uint32_t bits = (ab & mask) | (bb & ~mask);
+    float out;
+    std::memcpy(&out, &bits, sizeof out);
+    return out;
+  }
+}
+
+// sqrt(x) for x = 0, normal x > 0 and +inf: x RsqrtLanes(x), within 3 ulp
+// (tests/lib/lane_math.cpp). std::sqrt sets errno for negative x unless -fno-math-errno,
+// and that call keeps a loop scalar.
+template <typename Real>
+[[gnu::always_inline]] inline Real SqrtLanes(Real x) {
+  if constexpr (!std::is_same_v<Real, float>) {
+    return std::sqrt(x);
+  } else {
+    return SelectLanes(x < std::numeric_limits<float>::infinity(), x * RsqrtLanes(x), x);
+  }
+}
+
 namespace detail {
 inline float FloatFromBits(std::uint32_t bits) {
   float x;
@@ -110,7 +141,7 @@ template <typename Real>
     return std::log1p(x);
   } else {
     float u = 1 + x;
-    float c = (x > 1 ? 1 - (u - x) : x - (u - 1)) / u;
+    float c = SelectLanes(x > 1, 1 - (u - x), x - (u - 1)) / u;
     std::uint32_t bits = detail::BitsOfFloat(u);
     // The exponent of u relative to sqrt(1/2)'s, as an arithmetic shift of a signed difference.
     std::int32_t k = static_cast<std::int32_t>(bits - 0x3f3504f3u) >> 23;
@@ -121,7 +152,8 @@ template <typename Real>
     float log = kf * detail::kLn2Hi + (f - (half_f2 - (s * (half_f2 + r) + (kf * detail::kLn2Lo + c))));
     // Outside (0, inf) u is -1's image (-inf), below it (NaN), +inf or NaN.
     constexpr float kInf = std::numeric_limits<float>::infinity();
-    return u > 0 && u < kInf ? log : (u == 0 ? -kInf : (u > 0 ? u : std::numeric_limits<float>::quiet_NaN()));
+    float special = SelectLanes(u == 0, -kInf, SelectLanes(u > 0, u, std::numeric_limits<float>::quiet_NaN()));
+    return SelectLanes((u > 0) & (u < kInf), log, special);
   }
 }
 
@@ -136,7 +168,7 @@ template <typename Real>
   if constexpr (!std::is_same_v<Real, float>) {
     return std::expm1(x);
   } else {
-    float xc = x < -20.0f ? -20.0f : (x > 88.8f ? 88.8f : x);
+    float xc = SelectLanes(x < -20.0f, -20.0f, SelectLanes(x > 88.8f, 88.8f, x));
     constexpr float kShift = 12582912.0f;  // 1.5 * 2^23: rounds to an integer left in the low bits
     float shifted = xc * 1.44269504f + kShift;
     float kf = shifted - kShift;
@@ -146,7 +178,7 @@ template <typename Real>
                                       r * (1.3888889e-3f + r * (1.9841270e-4f + r * 2.4801587e-5f))))));
     float scale = detail::FloatFromBits(static_cast<std::uint32_t>(k + 127) << 23);
     float half_scale = detail::FloatFromBits(static_cast<std::uint32_t>(k + 126) << 23);
-    return kf <= 24 ? scale * p + (scale - 1) : half_scale * (1 + p) * 2 - 1;
+    return SelectLanes(kf <= 24, scale * p + (scale - 1), half_scale * (1 + p) * 2 - 1);
   }
 }
 

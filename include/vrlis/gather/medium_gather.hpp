@@ -4,6 +4,9 @@
 // time (method.hpp). The integrand, per unit length on both segments, is
 //   sigma_s^2 rho(w_c . w) rho(-w_l . w) T(t - tmin) T(v) T(|y - x|) / |y - x|^2,
 // w the unit vector from the camera point x(t) to the VRL point y(v).
+#include <algorithm>
+#include <type_traits>
+
 #include "../method.hpp"
 #include "gather_sample.hpp"
 
@@ -44,14 +47,10 @@ decltype(auto) WithGatherSamplers(GatherMethod method, F&& f) {
   });
 }
 
-// One estimate from two uniform numbers (u_vrl for step one, u_camera for step two) with
-// both samplers fixed at compile time, for a query the caller has validated
-// (Validate(q) == QueryError::None): the renderer's inner loop. Flattened: compilers stop
-// inlining the samplers once a translation unit holds many of them (every method of the
-// registry), and the calls then cost as much as the arithmetic.
-template <typename StepOneSampler, typename CameraSampler, typename Real>
-[[gnu::flatten]] GatherSample<Real> SampleMediumGather(ValidQuery, const MediumGatherQuery<Real>& q, Real u_vrl, Real u_camera) {
-  SegmentSample<Real> v = StepOneSampler(ValidQuery{}, q).sample_pdf(u_vrl);
+// Step two and the weight for step one's sample v (usable or not) and u_camera.
+template <typename CameraSampler, typename Real>
+[[gnu::always_inline]] inline GatherSample<Real> FinishMediumGather(ValidQuery, const MediumGatherQuery<Real>& q,
+                                                                    SegmentSample<Real> v, Real u_camera) {
   if (!detail::Usable(v)) return {};
   Vec3<Real> y = q.vrl.at(v.t);
   SegmentSample<Real> t = CameraSampler(ValidQuery{}, CameraStepQuery(q, y)).sample_pdf(u_camera);
@@ -65,6 +64,39 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
   s.pdf_v = v.pdf;
   Real f = MediumGatherIntegrand(q, t.t, v.t, &s.transmittance);
   return detail::Finish(s, f, t.pdf * v.pdf);
+}
+
+// One estimate from two uniform numbers (u_vrl for step one, u_camera for step two) with
+// both samplers fixed at compile time, for a query the caller has validated
+// (Validate(q) == QueryError::None). Flattened: compilers stop inlining the samplers once a
+// translation unit holds many of them (every method of the registry), and the calls then
+// cost as much as the arithmetic.
+template <typename StepOneSampler, typename CameraSampler, typename Real>
+[[gnu::flatten]] GatherSample<Real> SampleMediumGather(ValidQuery, const MediumGatherQuery<Real>& q, Real u_vrl, Real u_camera) {
+  return FinishMediumGather<CameraSampler>(ValidQuery{}, q, StepOneSampler(ValidQuery{}, q).sample_pdf(u_vrl), u_camera);
+}
+
+// Many VRLs against one camera segment, a renderer's inner loop: out[i] is
+// SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
+// (each query valid). Step one with VrlPoint runs kVrlPointBatch VRLs at once as vector
+// lanes (SampleVrlPoints, the same numbers as one at a time).
+template <typename StepOneSampler, typename CameraSampler, typename Real>
+[[gnu::flatten]] void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
+                                          const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
+                                          const Real* u_camera, GatherSample<Real>* out) {
+  for (int first = 0; first < count; first += kVrlPointBatch) {
+    int n = std::min(kVrlPointBatch, count - first);
+    SegmentSample<Real> v[kVrlPointBatch];
+    if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
+      SampleVrlPoints(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
+    } else {
+      for (int i = 0; i < n; ++i)
+        v[i] = StepOneSampler(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first + i], medium}).sample_pdf(u_vrl[first + i]);
+    }
+    for (int i = 0; i < n; ++i)
+      out[first + i] = FinishMediumGather<CameraSampler>(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first + i], medium},
+                                                         v[i], u_camera[first + i]);
+  }
 }
 
 // The same with the samplers chosen at run time; any query (an invalid one samples nothing).

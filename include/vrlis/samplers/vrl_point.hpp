@@ -40,6 +40,77 @@ QueryError Validate(const VrlPointQuery<Real>& q) {
   return QueryError::None;
 }
 
+namespace detail {
+
+// Step one's density on one VRL, and the outward walk that samples it: from the point the
+// samples reach first, tmin when x >= 0 throughout, tmax when x <= 0, else v0 with the
+// masses on either side of it, so that no walk moves towards v0, where digits cancel.
+template <typename Real>
+struct VrlPointDensity {
+  Real tmin = 0, tmax = 0;
+  Real k = 0, xa = 0, total = 0;      // x(v) = xa + k (v - tmin); k = 0: uniform
+  Real start = 0, x0 = 0, before = 0;  // the walk: where it starts, |x| there, the CDF there
+};
+
+// The fit for a valid query of representable length. Branch-free (every case computed,
+// then selected), so that a loop over VRLs vectorises (SampleVrlPoints).
+template <typename Real>
+[[gnu::always_inline]] inline VrlPointDensity<Real> FitVrlPointDensity(const VrlPointQuery<Real>& q) {
+  VrlPointDensity<Real> f;
+  f.tmin = q.tmin;
+  f.tmax = q.tmax;
+  Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
+  Real sin2 = Dot(cross, cross), inv_sin_a = RsqrtLanes(sin2), sin_a = sin2 * inv_sin_a;
+  // (Selects, not std::max or std::min, here and below: their branches would take the
+  // arithmetic that follows into them, and the loop would stay scalar.)
+  Real h = std::abs(Dot(d, cross)) * inv_sin_a, floor = NoiseFloor(SqrtLanes(Dot(d, d)) + std::abs(q.tmin) + std::abs(q.tmax));
+  h = SelectLanes(h < floor, floor, h);
+  Real v0 = (Dot(d, q.dir) - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) * Sqr(inv_sin_a);
+  Real k = sin_a / h, kl = k * (q.tmax - q.tmin);
+  Real xa = k * (q.tmin - v0), xb = xa + kl;
+  Real sa = SqrtLanes(1 + xa * xa), sb = SqrtLanes(1 + xb * xb);
+  bool inside = (xa < 0) & (xb > 0), from_tmin = xa >= 0;
+  // Inside: the masses of [tmin, v0] and [v0, tmax]; else the whole mass and 0.
+  Real a = Log1pLanes(SelectLanes(inside, AsinhDifferenceArgument(xa, -xa, sa, Real(1)),
+                                  AsinhDifferenceArgument(xa, kl, sa, sb)));
+  Real b = Log1pLanes(SelectLanes(inside, AsinhDifferenceArgument(Real(0), xb, Real(1), sb), Real(0)));
+  f.total = a + b;
+  f.start = SelectLanes(inside, v0, SelectLanes(from_tmin, q.tmin, q.tmax));
+  f.x0 = SelectLanes(inside, Real(0), SelectLanes(from_tmin, xa, -xb));
+  f.before = SelectLanes(inside, a, SelectLanes(from_tmin, Real(0), f.total));
+  f.xa = xa;
+  // Uniform: parallel lines; a density that varies by at most k L / 2 < epsilon over the VRL
+  // (the asinh difference of a subnormal k L would have no digits left); no finite mass.
+  bool uniform = !(sin_a > 0) | !(kl > std::numeric_limits<Real>::epsilon()) | !(f.total > 0) |
+                 !(f.total <= std::numeric_limits<Real>::max());
+  f.k = SelectLanes(uniform, Real(0), k);
+  return f;
+}
+
+// A sample and its density, branch-free. The walk covers the mass |e| from its start: for
+// x0 >= 0 and x1 = sinh(asinh(x0) + |e|), x1 - x0 and sqrt(1 + x1^2) = cosh(...) as sums of
+// positive terms. One expm1 gives both hyperbolic functions of |e|: with m = expm1(|e| / 2),
+// sinh(|e| / 2) = m (m + 2) / (2 (m + 1)), cosh(|e| / 2) - 1 = m^2 / (2 (m + 1)) and
+// sinh(|e|) = 2 sinh(|e| / 2) cosh(|e| / 2).
+template <typename Real>
+[[gnu::always_inline]] inline SegmentSample<Real> SampleVrlPointDensity(const VrlPointDensity<Real>& f, Real u) {
+  Real e = u * f.total - f.before;  // the mass from the start to the sample, signed by direction
+  Real m = Expm1Lanes(std::abs(e) / 2), inv = 1 / (2 * (m + 1));
+  Real sh_half = m * (m + 2) * inv, ch_half = 1 + m * m * inv;
+  Real half = 2 * Sqr(sh_half), sh = 2 * sh_half * ch_half, r0 = SqrtLanes(1 + f.x0 * f.x0);
+  Real dx = f.x0 * half + r0 * sh, root = r0 * (1 + half) + f.x0 * sh;
+  Real v = f.start + std::copysign(dx, e) / f.k;
+  // Rounding may step past an end: clamped, with the density where it lands.
+  Real vc = SelectLanes(v < f.tmin, f.tmin, SelectLanes(v > f.tmax, f.tmax, v)), xc = f.xa + f.k * (vc - f.tmin);
+  Real pdf = f.k / (f.total * SelectLanes(vc == v, root, SqrtLanes(1 + xc * xc)));
+  Real length = f.tmax - f.tmin, uniform_t = f.tmin + u * length;
+  bool uniform = f.k == 0;
+  uniform_t = SelectLanes(uniform_t > f.tmax, f.tmax, uniform_t);
+  return {SelectLanes(uniform, uniform_t, vc), SelectLanes(uniform, 1 / length, pdf)};
+}
+
+}  // namespace detail
+
 template <typename R = float>
 class VrlPoint {
  public:
@@ -49,114 +120,90 @@ class VrlPoint {
   // Step one of a medium-to-medium gather: the VRL against the camera segment's line. The
   // whole gather query is validated (Validate(MediumGatherQuery)), as every step is; a
   // valid gather query makes a valid VrlPointQuery.
-  explicit VrlPoint(const MediumGatherQuery<Real>& q) : VrlPoint(LineQuery(q), Validate(q)) {}
+  explicit VrlPoint(const MediumGatherQuery<Real>& q) : VrlPoint(LineQuery(q.camera, q.vrl), Validate(q)) {}
   // The same for a gather query the caller has validated.
-  VrlPoint(ValidQuery, const MediumGatherQuery<Real>& q) : VrlPoint(LineQuery(q), QueryError::None) {}
+  VrlPoint(ValidQuery, const MediumGatherQuery<Real>& q) : VrlPoint(LineQuery(q.camera, q.vrl), QueryError::None) {}
 
   bool valid() const { return error_ == QueryError::None; }
   QueryError error() const { return error_; }
 
- private:
-  static VrlPointQuery<Real> LineQuery(const MediumGatherQuery<Real>& q) {
-    return {q.vrl.origin, q.vrl.dir, 0, q.vrl.length, q.camera.origin, q.camera.dir};
+  static VrlPointQuery<Real> LineQuery(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl) {
+    return {vrl.origin, vrl.dir, 0, vrl.length, camera.origin, camera.dir};
   }
+
+ private:
   // error: Validate of the query this one was built from.
-  VrlPoint(const VrlPointQuery<Real>& q, QueryError error) : tmin_(q.tmin), tmax_(q.tmax), error_(error) {
-    if (!valid() || !Representable()) return;
-    Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
-    Real sin_a = Length(cross);
-    Real along = Dot(d, q.dir);
-    if (!(sin_a > 0)) return;  // parallel: uniform
-    Real inv_sin_a = 1 / sin_a;
-    Real h = std::abs(Dot(d, cross)) * inv_sin_a;
-    h = std::max(h, NoiseFloor(Length(d) + std::abs(tmin_) + std::abs(tmax_)));
-    Real v0 = (along - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) * Sqr(inv_sin_a);
-    k_ = sin_a / h;
-    // The density varies by at most k L / 2 over the VRL: below epsilon it is uniform, and
-    // the asinh difference of a subnormal k L would have no digits left.
-    if (!(k_ * (tmax_ - tmin_) > std::numeric_limits<Real>::epsilon())) {
-      k_ = 0;
-      return;
-    }
-    xa_ = k_ * (tmin_ - v0);
-    Real xb = xa_ + k_ * (tmax_ - tmin_);
-    // Sampling walks outward from the point of the VRL nearest the line that the samples
-    // reach first: tmin when x >= 0 throughout, tmax when x <= 0, else v0 with the masses
-    // on either side of it (so that no walk moves towards v0, where digits cancel).
-    if (xa_ >= 0) {
-      total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
-      walk_ = {tmin_, xa_, 0};
-    } else if (xb <= 0) {
-      total_ = AsinhDifference(xa_, k_ * (tmax_ - tmin_));
-      walk_ = {tmax_, -xb, total_};
-    } else {
-      Real left = AsinhDifference(Real(0), -xa_);
-      total_ = left + AsinhDifference(Real(0), xb);
-      walk_ = {v0, 0, left};
-    }
-    if (!(total_ > 0) || !std::isfinite(total_)) k_ = 0;  // uniform to the last digit
+  VrlPoint(const VrlPointQuery<Real>& q, QueryError error) : error_(error) {
+    density_.tmin = q.tmin;
+    density_.tmax = q.tmax;
+    if (valid() && Representable()) density_ = detail::FitVrlPointDensity(q);
   }
 
  public:
   Real sample(Real u) const { return sample_pdf(u).t; }
 
   Real pdf(Real v) const {
-    if (!valid() || !(v >= tmin_ && v <= tmax_) || !Representable()) return 0;
-    if (k_ == 0) return 1 / (tmax_ - tmin_);
-    Real x = xa_ + k_ * (v - tmin_);
-    return k_ / (total_ * std::sqrt(1 + x * x));
+    const detail::VrlPointDensity<Real>& f = density_;
+    if (!valid() || !(v >= f.tmin && v <= f.tmax) || !Representable()) return 0;
+    if (f.k == 0) return 1 / (f.tmax - f.tmin);
+    Real x = f.xa + f.k * (v - f.tmin);
+    return f.k / (f.total * std::sqrt(1 + x * x));
   }
 
   // The density from the sample's hyperbolic functions: sqrt(1 + x^2) = cosh(asinh(x)).
   SegmentSample<Real> sample_pdf(Real u) const {
     if (!valid()) return {kNaN, 0};
-    Real length = tmax_ - tmin_;
-    if (!Representable()) return {tmin_, 0};
-    if (k_ == 0) return {std::min(tmin_ + u * length, tmax_), 1 / length};
-    // e: the mass from the walk's start to the sample, signed by the direction of the walk.
-    Real e = u * total_ - walk_.mass_before;
-    Outward step(walk_.x, std::abs(e));
-    Real v = walk_.start + std::copysign(step.dx, e) / k_;
-    if (!(v >= tmin_ && v <= tmax_)) {  // clamped: the density where it lands
-      v = Clamp(v, tmin_, tmax_);
-      return {v, pdf(v)};
-    }
-    return {v, k_ / (total_ * step.root)};
+    if (!Representable()) return {density_.tmin, 0};
+    return detail::SampleVrlPointDensity(density_, u);
   }
 
   Real invert(Real v) const {
+    const detail::VrlPointDensity<Real>& f = density_;
     if (!valid()) return kNaN;
     if (!Representable()) return 0;
-    v = Clamp(v, tmin_, tmax_);
-    if (k_ == 0) return (v - tmin_) / (tmax_ - tmin_);
-    return Clamp(AsinhDifference(xa_, k_ * (v - tmin_)) / total_, Real(0), Real(1));
+    v = Clamp(v, f.tmin, f.tmax);
+    if (f.k == 0) return (v - f.tmin) / (f.tmax - f.tmin);
+    return Clamp(AsinhDifference(f.xa, f.k * (v - f.tmin)) / f.total, Real(0), Real(1));
   }
 
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
-  bool Representable() const { return RepresentableLength(tmax_ - tmin_); }
-  // For x0 >= 0, d >= 0 and x1 = sinh(asinh(x0) + d): x1 - x0 and sqrt(1 + x1^2) = cosh(...),
-  // both as sums of positive terms. One expm1 gives both hyperbolic functions of d: with
-  // e = expm1(d / 2), sinh(d / 2) = e (e + 2) / (2 (e + 1)) and cosh(d / 2) - 1 = e^2 / (2 (e + 1)),
-  // and sinh(d) = 2 sinh(d / 2) cosh(d / 2).
-  struct Outward {
-    Real dx, root;
-    Outward(Real x0, Real d) {
-      Real e = Expm1Lanes(d / 2), inv = 1 / (2 * (e + 1));
-      Real sh_half = e * (e + 2) * inv, ch_half = 1 + e * e * inv;
-      Real half = 2 * Sqr(sh_half), sh = 2 * sh_half * ch_half, r0 = std::sqrt(1 + x0 * x0);
-      dx = x0 * half + r0 * sh;
-      root = r0 * (1 + half) + x0 * sh;
-    }
-  };
+  bool Representable() const { return RepresentableLength(density_.tmax - density_.tmin); }
 
-  Real tmin_, tmax_;
   QueryError error_;
-  Real k_ = 0, xa_ = 0, total_ = 0;
-  struct Walk {
-    Real start, x, mass_before;  // where it starts, |x| there, the CDF there
-  } walk_{};
+  detail::VrlPointDensity<Real> density_;
 };
+
+// The number of VRLs SampleVrlPoints takes at once: eight float lanes (one AVX register).
+inline constexpr int kVrlPointBatch = 8;
+
+// Step one for count (1 to kVrlPointBatch) VRLs against one camera segment's line, each a
+// valid gather query with it: out[i] is VrlPoint(vrls[i]).sample_pdf(u[i]). The VRLs are
+// independent, so the fit and the sample run as one loop over lanes that compilers
+// vectorise; the unused lanes repeat the first VRL.
+template <typename Real>
+void SampleVrlPoints(ValidQuery, const RaySegment<Real>& camera, const VrlSegment<Real>* vrls, int count,
+                     const Real* u, SegmentSample<Real>* out) {
+  // One array per coordinate, the layout vector loads want.
+  Real ox[kVrlPointBatch], oy[kVrlPointBatch], oz[kVrlPointBatch], dx[kVrlPointBatch], dy[kVrlPointBatch],
+      dz[kVrlPointBatch], length[kVrlPointBatch], uu[kVrlPointBatch];
+  for (int i = 0; i < kVrlPointBatch; ++i) {
+    const VrlSegment<Real>& vrl = vrls[i < count ? i : 0];
+    ox[i] = vrl.origin.x, oy[i] = vrl.origin.y, oz[i] = vrl.origin.z;
+    dx[i] = vrl.dir.x, dy[i] = vrl.dir.y, dz[i] = vrl.dir.z;
+    length[i] = vrl.length;
+    uu[i] = u[i < count ? i : 0];
+  }
+  Real t[kVrlPointBatch], pdf[kVrlPointBatch];
+  for (int i = 0; i < kVrlPointBatch; ++i) {
+    VrlPointQuery<Real> q{{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, 0, length[i], camera.origin, camera.dir};
+    SegmentSample<Real> s = detail::SampleVrlPointDensity(detail::FitVrlPointDensity(q), uu[i]);
+    bool representable = RepresentableLength(length[i]);  // else tmin with pdf 0, as VrlPoint
+    t[i] = SelectLanes(representable, s.t, Real(0));
+    pdf[i] = SelectLanes(representable, s.pdf, Real(0));
+  }
+  for (int i = 0; i < count; ++i) out[i] = {t[i], pdf[i]};
+}
 
 // Its entry in the run-time sampler tables (method.hpp).
 struct VrlPointEntry {

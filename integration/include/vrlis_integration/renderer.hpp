@@ -26,33 +26,31 @@ struct RenderSettings {
   std::atomic<int>* rows_done = nullptr;
 };
 
+// A renderer of one scene with fixed settings, pass by pass.
 class Renderer {
  public:
+  Renderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
   virtual ~Renderer() = default;
   // Pass number `pass` of the render seeded by `seed`.
   virtual Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) = 0;
+
+ protected:
+  const Scene& scene_;
+  RenderSettings settings_;
 };
 
 // The bidirectional VRL pipeline: light pass, then camera pass.
 class VrlRenderer : public Renderer {
  public:
-  VrlRenderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
+  using Renderer::Renderer;
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
-
- private:
-  const Scene& scene_;
-  RenderSettings settings_;
 };
 
 // The reference: a volumetric path tracer with next-event estimation.
 class PathTracingRenderer : public Renderer {
  public:
-  PathTracingRenderer(const Scene& scene, const RenderSettings& settings) : scene_(scene), settings_(settings) {}
+  using Renderer::Renderer;
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
-
- private:
-  const Scene& scene_;
-  RenderSettings settings_;
 };
 
 }  // namespace vrli
