@@ -23,15 +23,14 @@ Real SampleLinear(Real v, Real f0, Real f1) {
   return denom > 0 ? Clamp(v * (f0 + f1) / denom, Real(0), Real(1)) : v;
 }
 
-// The largest j in [0, count - 2] with a[j] <= x (0 if there is none), for a nondecreasing a.
+// The largest j in [0, count - 2] with a[j] <= x (0 if there is none), for a nondecreasing a:
+// the number of a[1..count-2] at or below x, counted without branches on x: the interval is
+// random per call, and a binary search's branches would be mispredicted.
 template <typename Real, std::size_t N>
 int FindInterval(const std::array<Real, N>& a, int count, Real x) {
-  int lo = 0, hi = count - 2;
-  while (lo < hi) {
-    int mid = (lo + hi + 1) / 2;
-    if (a[mid] <= x) lo = mid; else hi = mid - 1;
-  }
-  return lo;
+  int j = 0;
+  for (int k = 1; k + 1 < count; ++k) j += a[k] <= x;
+  return j;
 }
 
 template <typename Real, int N>
@@ -46,9 +45,10 @@ class PiecewiseLinear {
   // with a positive area (the caller's fit guarantees it).
   PiecewiseLinear(const std::array<Real, N>& nodes, const std::array<Real, N>& values, int count = N)
       : count_(count), node_(nodes), value_(values) {
+    // From the arguments, not the members just copied: no load waits on those stores.
     area_[0] = 0;
-    for (int j = 0; j + 1 < count_; ++j)
-      area_[j + 1] = area_[j] + (value_[j] + value_[j + 1]) / 2 * (node_[j + 1] - node_[j]);
+    for (int j = 0; j + 1 < count; ++j)
+      area_[j + 1] = area_[j] + (values[j] + values[j + 1]) / 2 * (nodes[j + 1] - nodes[j]);
   }
 
   int count() const { return count_; }
