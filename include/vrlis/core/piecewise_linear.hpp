@@ -23,14 +23,15 @@ Real SampleLinear(Real v, Real f0, Real f1) {
   return denom > 0 ? Clamp(v * (f0 + f1) / denom, Real(0), Real(1)) : v;
 }
 
-// The largest j in [0, count - 2] with a[j] <= x (0 if there is none), for a nondecreasing a:
-// the number of a[1..count-2] at or below x, counted without branches on x: the interval is
-// random per call, and a binary search's branches would be mispredicted.
+// The largest j in [0, count - 2] with a[j] <= x (0 if there is none), for a nondecreasing a.
 template <typename Real, std::size_t N>
 int FindInterval(const std::array<Real, N>& a, int count, Real x) {
-  int j = 0;
-  for (int k = 1; k + 1 < count; ++k) j += a[k] <= x;
-  return j;
+  int lo = 0, hi = count - 2;
+  while (lo < hi) {
+    int mid = (lo + hi + 1) / 2;
+    if (a[mid] <= x) lo = mid; else hi = mid - 1;
+  }
+  return lo;
 }
 
 template <typename Real, int N>
