@@ -11,6 +11,7 @@
 //   = sigma_t h sin(delta/2) / (cos(x/2) cos(x_a/2)),
 // which reuses the cosine the segment lobe needs anyway and never cancels.
 #include <array>
+#include <limits>
 
 #include "phase_product.hpp"
 
@@ -86,7 +87,9 @@ class FullProductTarget {
       Real f = k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c);
       Real df = k * (3 * s * c * c - c * c * c * c / s) - 8 * a * sigma_h_ * c;
       if (!(df > 0)) return -1;  // past the maximum of the left side: no crossing from below
-      c -= f / df;
+      Real step = f / df;
+      c -= step;
+      if (std::abs(step) <= std::numeric_limits<Real>::epsilon() * c) break;  // converged: further steps only round
     }
     if (!(c > 0 && c < 1)) return -1;
     Real s = std::sqrt(1 - c * c);
