@@ -84,3 +84,20 @@ TEST_CASE("Expm1Lanes<float> is within 2 ulp over its finite range, relative for
   CHECK(vrlis::Expm1Lanes(-30.0f) == -1);
   CHECK(std::isnan(vrlis::Expm1Lanes(std::numeric_limits<float>::quiet_NaN())));
 }
+
+TEST_CASE("ExpLanes<float> is within 2 ulp down to the smallest normal result, 0 below", "[lib][lane_math]") {
+  const double ulp = std::numeric_limits<float>::epsilon();
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> range(-87.3f, 88.0f), small(-1.0f, 1.0f);
+  double worst = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    float x = i % 2 ? range(rng) : std::ldexp(small(rng), -(i % 30));
+    double exact = std::exp(double(x));
+    worst = std::max(worst, std::abs(vrlis::ExpLanes(x) - exact) / exact);
+  }
+  CHECK(worst <= 2 * ulp);
+  CHECK(vrlis::ExpLanes(0.0f) == 1.0f);
+  CHECK(vrlis::ExpLanes(-90.0f) == 0.0f);
+  CHECK(vrlis::ExpLanes(-std::numeric_limits<float>::infinity()) == 0.0f);
+  CHECK(std::isnan(vrlis::ExpLanes(std::numeric_limits<float>::quiet_NaN())));
+}

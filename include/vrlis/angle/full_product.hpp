@@ -11,6 +11,7 @@
 //   = sigma_t h sin(delta/2) / (cos(x/2) cos(x_a/2)),
 // which reuses the cosine the segment lobe needs anyway and never cancels.
 #include <array>
+#include <limits>
 
 #include "phase_product.hpp"
 
@@ -35,9 +36,20 @@ class FullProductTarget {
     if (depth_scale_ > 0) value *= std::exp(-depth_scale_ * std::sin(delta / 2) / std::max(cos_half, Real(0)));
     return value;
   }
+  // The value at every offset in `delta` (a fit's nodes): the phase product's branch-free
+  // loop, then the transmittance in another, with cos(x/2) = cos(delta/2 - lower/2) by the
+  // subtraction formula from one sincos of delta / 2 per node (whose sine the optical depth
+  // needs too). Both loops vectorise in float.
   template <std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
-    for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
+    phase_.evaluate(delta, out);
+    if (!(depth_scale_ > 0)) return;
+    const SinCosPair<Real> pole = SinCosLanes(phase_.lower_pole() / 2);
+    for (std::size_t j = 0; j < N; ++j) {
+      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
+      Real cos_half = half.cos * pole.cos + half.sin * pole.sin;
+      out[j] *= ExpLanes(-depth_scale_ * half.sin / std::max(cos_half, Real(0)));
+    }
   }
 
   bool point_lobe_flat() const { return phase_.point_lobe_flat(); }
@@ -75,7 +87,9 @@ class FullProductTarget {
       Real f = k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c);
       Real df = k * (3 * s * c * c - c * c * c * c / s) - 8 * a * sigma_h_ * c;
       if (!(df > 0)) return -1;  // past the maximum of the left side: no crossing from below
-      c -= f / df;
+      Real step = f / df;
+      c -= step;
+      if (std::abs(step) <= std::numeric_limits<Real>::epsilon() * c) break;  // converged: further steps only round
     }
     if (!(c > 0 && c < 1)) return -1;
     Real s = std::sqrt(1 - c * c);

@@ -182,4 +182,39 @@ template <typename Real>
   }
 }
 
+// exp(x) for x <= 88, vectorisable in float: x = k ln 2 + r with k the nearest integer to
+// x / ln 2 (the rounding trick of SinCosLanes; ln 2 split in two floats, the first with 15
+// significant bits, so that k times it is exact for |k| <= 127), the Taylor series of exp r
+// to r^7 on |r| <= ln(2) / 2 (truncation below (ln(2)/2)^8 / 8! = 5e-9, under float's half
+// ulp), then 2^k put into the exponent bits. Within 2 ulp of exp (tests/lib/lane_math.cpp)
+// down to the smallest normal float; below it (x < -87.3, subnormal results) 0, and
+// exp(-inf) = 0. NaN propagates.
+template <typename Real>
+[[gnu::always_inline]] inline Real ExpLanes(Real x) {
+  if constexpr (!std::is_same_v<Real, float>) {
+    return std::exp(x);
+  } else {
+    constexpr float kSmallest = -87.33654f;  // ln of the smallest normal float
+    constexpr float kShift = 12582912.0f;
+    float shifted = x * 1.44269504088896341f + kShift;
+    float k = shifted - kShift;
+    std::uint32_t bits;
+    std::memcpy(&bits, &shifted, sizeof bits);
+    float r = (x - k * 0.693145751953125f) - k * 1.428606765330187e-6f;
+    float p = 1 + r * (1 + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f + r * (8.3333333e-3f + r * (1.3888889e-3f + r * 1.9841270e-4f))))));
+    // shifted's bits minus kShift's are k; k + 127 is the biased exponent of 2^k.
+    std::uint32_t scale_bits = (bits - 0x4B400000u + 127u) << 23;
+    float scale;
+    std::memcpy(&scale, &scale_bits, sizeof scale);
+    float out = p * scale;
+    // Below kSmallest 2^k is no normal float, and the result is zeroed, with a bit mask: a
+    // select (or clamping x first) stops compilers from vectorising.
+    std::uint32_t out_bits, keep = 0u - std::uint32_t(!(x < kSmallest));
+    std::memcpy(&out_bits, &out, sizeof out_bits);
+    out_bits &= keep;
+    std::memcpy(&out, &out_bits, sizeof out);
+    return out;
+  }
+}
+
 }  // namespace vrlis

@@ -46,9 +46,10 @@ class PiecewiseLinear {
   // with a positive area (the caller's fit guarantees it).
   PiecewiseLinear(const std::array<Real, N>& nodes, const std::array<Real, N>& values, int count = N)
       : count_(count), node_(nodes), value_(values) {
+    // From the arguments, not the members just copied: no load waits on those stores.
     area_[0] = 0;
-    for (int j = 0; j + 1 < count_; ++j)
-      area_[j + 1] = area_[j] + (value_[j] + value_[j + 1]) / 2 * (node_[j + 1] - node_[j]);
+    for (int j = 0; j + 1 < count; ++j)
+      area_[j + 1] = area_[j] + (values[j] + values[j + 1]) / 2 * (nodes[j + 1] - nodes[j]);
   }
 
   int count() const { return count_; }
