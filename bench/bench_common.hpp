@@ -40,16 +40,14 @@ void OverPool(benchmark::State& state, Body body) {
   state.SetItemsProcessed(state.iterations());
 }
 
-// The timed body of Camera/ and of step one alone: fit a Sampler from query(i), sample at
-// xi(i), pdf.
+// The timed body of Camera/ and of step one alone: fit a Sampler from query(i), then a
+// sample at xi(i) with its density (sample_pdf, one call).
 template <typename Sampler, typename Query, typename Xi>
 void FitSamplePdf(benchmark::State& state, Query query, Xi xi) {
   OverPool(state, [&](size_t i) {
     Sampler s(query(i));
-    float t = s.sample(xi(i));
-    float pdf = s.pdf(t);
-    benchmark::DoNotOptimize(t);
-    benchmark::DoNotOptimize(pdf);
+    SegmentSample<float> sample = s.sample_pdf(xi(i));  // the fused call renderers make
+    benchmark::DoNotOptimize(sample);
   });
 }
 

@@ -127,7 +127,7 @@ def main():
         L.append(f"- Machine: {args.machine}")
     if args.command:
         L.append(f"- Command: `{args.command}`")
-    L.append(f"- Speed: `vrlis_bench`, float, one sample = fit + sample + pdf over a pool of "
+    L.append(f"- Speed: `vrlis_bench`, float, one sample = fit + sample_pdf (sample and its density in one call, as renderers make it) over a pool of "
              f"{context.get('vrlis_pool', '1024')} random queries cycled in order; median CPU time of the repetitions "
              f"of one run (vrlis build: {context.get('vrlis_build', '?')}).")
     L.append(f"- Accuracy: `vrlis_accuracy`, relative variance `Int f^2/p / (Int f)^2 - 1` by quadrature (double), "
@@ -177,7 +177,7 @@ def main():
 
     vm = [times.get(f"VrlMarginal/step/{gkey(g)}") for g in gs]
     if all(vm):
-        L.append(f"VrlMarginal alone (fit + sample + pdf; 8 nodes, each a 2-point rule on 1-5 pieces cut at the lobes' peaks): {geomean(vm):.0f} ns "
+        L.append(f"VrlMarginal alone (fit + sample_pdf; 8 nodes, each a 2-point rule on 1-5 pieces cut at the lobes' peaks): {geomean(vm):.0f} ns "
                  f"(range over g {min(vm):.0f}-{max(vm):.0f}); the estimator with it as step one is timed as "
                  f"EstimatorMarginal/<camera sampler>.")
         L.append("")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fits the polynomial of vrlis::Atan2<float> (include/vrlis/core/math.hpp):
+"""Fits the polynomial of vrlis::Atan2Lanes<float> (include/vrlis/core/lane_math.hpp):
 atan(x) = x P(x^2) on [0, 1], minimising the maximum relative error (Lawson's iteratively
 reweighted least squares). Prints the coefficients, highest degree first, and the error."""
 import numpy as np

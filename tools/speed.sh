@@ -8,7 +8,7 @@
 # Prints (and writes to <outdir>/speed.md):
 # - vrl_render VRL gathers per second, per scene x sampler x build, on 1 and 2 threads, and
 #   the 2-thread speedup;
-# - vrlis_bench's camera step per sample (fit + sample + pdf), per sampler x g x build, and
+# - vrlis_bench's camera step per sample (fit + sample + pdf: this tree fuses the last two in sample_pdf, the baseline of 146a16a calls sample then pdf), per sampler x g x build, and
 #   the ratios CauchySum / Novak and CauchyMixture / Novak.
 # Environment: VRLIS_SPEED_BASE (a configured baseline build dir; default: commit
 # VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base),
@@ -114,7 +114,7 @@ names = sorted({n for _, n in times}, key=lambda n: (n.split("/")[1], float(n.sp
 gs = sorted({float(n.split(":")[1]) for n in names})
 cams = ["Equiangular", "Novak", "CauchySum", "CauchyMixture", "FullProduct"]
 def t(build, cam, g): return times.get((build, f"Camera/{cam}/g:{g:.2f}"))
-print(f"\nCamera step per sample, ns (fit + sample + pdf, float; median of {reps} interleaved runs)\n")
+print(f"\nCamera step per sample, ns (fit + sample + pdf, float; this tree: fit + sample_pdf, one call; base: sample then pdf(t); median of {reps} interleaved runs)\n")
 print("| g | " + " | ".join(f"{c} base | {c} new" for c in cams) + " | CSum/Novak base | CSum/Novak new | CMix/Novak base | CMix/Novak new |")
 print("|---|" + "---|" * (2 * len(cams) + 4))
 def geo(xs): return math.exp(sum(map(math.log, xs)) / len(xs))

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <vrlis/core/lane_math.hpp>
+#include <vrlis/core/math.hpp>
 
 #include <cmath>
 #include <limits>
@@ -100,4 +101,22 @@ TEST_CASE("ExpLanes<float> is within 2 ulp down to the smallest normal result, 0
   CHECK(vrlis::ExpLanes(-90.0f) == 0.0f);
   CHECK(vrlis::ExpLanes(-std::numeric_limits<float>::infinity()) == 0.0f);
   CHECK(std::isnan(vrlis::ExpLanes(std::numeric_limits<float>::quiet_NaN())));
+}
+
+TEST_CASE("Atan2Lanes<float> is within 3 ulp, relative, over every octant and scale", "[lib][lane_math]") {
+  const double ulp = std::numeric_limits<float>::epsilon();
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> mantissa(-1.0f, 1.0f);
+  double worst = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    // Ratios |y / x| from 2^-60 to 2^60, both signs: every octant, small results included.
+    float y = std::ldexp(mantissa(rng), i % 61 - 30), x = std::ldexp(mantissa(rng), (i / 61) % 61 - 30);
+    double exact = std::atan2(double(y), double(x));
+    if (exact != 0) worst = std::max(worst, std::abs(vrlis::Atan2Lanes(y, x) - exact) / std::abs(exact));
+  }
+  CHECK(worst <= 3 * ulp);
+  CHECK(vrlis::Atan2Lanes(0.0f, 0.0f) == 0);
+  CHECK(vrlis::Atan2Lanes(0.0f, -1.0f) == 3.1415927f);
+  CHECK(std::isnan(vrlis::Atan2Lanes(std::numeric_limits<float>::quiet_NaN(), 1.0f)));
+  CHECK(std::isnan(vrlis::Atan2Lanes(1.0f, std::numeric_limits<float>::quiet_NaN())));
 }

@@ -37,7 +37,7 @@ class AngleDomain {
     Real r = std::abs(tan_a_);  // cos(theta_a) = 1 / sqrt(1 + A^2), without overflowing A^2
     cos_a_ = r > 1 ? 1 / (r * std::sqrt(1 + Sqr(1 / r))) : 1 / std::sqrt(1 + r * r);
     width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
-                                  : Atan2(Real(1), tan_a_);
+                                  : Atan2Lanes(Real(1), tan_a_);
   }
 
   Real tmin() const { return tmin_; }
@@ -88,7 +88,7 @@ class AngleDomain {
 
  private:
   // atan(b) - atan(a) with b - a = db >= 0, from the argument of (1 + i b)(1 - i a).
-  Real OffsetOfSlope(Real db, Real b) const { return Atan2(db, 1 + tan_a_ * b); }
+  Real OffsetOfSlope(Real db, Real b) const { return Atan2Lanes(db, 1 + tan_a_ * b); }
   // Samples must be finite even on an unbounded segment.
   Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
 

@@ -94,7 +94,7 @@ class FullProductTarget {
     if (!(c > 0 && c < 1)) return -1;
     Real s = std::sqrt(1 - c * c);
     if (std::abs(k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c)) > Real(1e-3) * sigma_h_ * base) return -1;
-    return 2 * Atan2(s, c) + phase_.lower_pole();
+    return 2 * Atan2Lanes(s, c) + phase_.lower_pole();
   }
 
  private:

@@ -26,15 +26,12 @@ class PhaseProduct {
 
   PhaseProduct(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
       : g_(q.g), g_point_(q.lobe.g), kind_(q.lobe.kind), width_(dom.width()) {
-    // Offsets of theta = -pi/2 and +pi/2; pick the formula whose atan2 is small.
-    Real A = dom.tan_theta_a();
-    if (A >= 0) {
-      upper_ = Atan2(Real(1), A);
-      lower_ = upper_ - kPi<Real>;
-    } else {
-      lower_ = -Atan2(Real(1), -A);
-      upper_ = lower_ + kPi<Real>;
-    }
+    // Offsets of theta = -pi/2 and +pi/2: the nearer pole's is the small atan2, the other's
+    // pi minus it. (Arctangents here and below are branch-free, and so is the choice: the
+    // octants and the side of the pole are random across queries.)
+    Real A = dom.tan_theta_a(), near = Atan2Lanes(Real(1), std::abs(A));
+    upper_ = A >= 0 ? near : kPi<Real> - near;
+    lower_ = A >= 0 ? near - kPi<Real> : -near;
     if (kind_ == LobeKind::None) return;
     Vec3<Real> n = dom.normal();
     Real a = -Dot(q.lobe.axis, n), b = Dot(q.lobe.axis, q.dir), c = Dot(q.lobe.axis, Cross(q.dir, n));
@@ -45,7 +42,7 @@ class PhaseProduct {
     r_ = std::min(std::sqrt(a * a + b * b), Real(1));
     one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
     // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.
-    theta_e_ = Atan2(b - A * a, a + A * b);
+    theta_e_ = Atan2Lanes(b - A * a, a + A * b);
   }
 
   // The product at every offset in `delta` (a fit's nodes). For two Henyey-Greenstein lobes

@@ -24,29 +24,6 @@ Real SafeSqrt(Real x) { return std::sqrt(std::max(x, Real(0))); }
 template <typename Real>
 constexpr Real Clamp(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
 
-// atan2 for the samplers' hot paths. glibc's atan2f costs several times its sinf, and the
-// Cauchy samplers are made of arctangents, so float gets a polynomial: atan(t) = t P(t^2)
-// on [0, 1], P fitted for minimal maximum relative error (1.6e-8, below float's half ulp;
-// the fit is reproduced by tools/fit_atan.py). Relative accuracy is kept for small results,
-// which matter most (offsets next to an endpoint). double uses std::atan2.
-template <typename Real>
-Real Atan2(Real y, Real x) {
-  if constexpr (!std::is_same_v<Real, float>) {
-    return std::atan2(y, x);
-  } else {
-    float ax = std::abs(x), ay = std::abs(y);
-    bool steep = ay > ax;
-    float hi = steep ? ay : ax, lo = steep ? ax : ay;
-    float t = hi > 0 ? lo / hi : 0.0f, s = t * t;
-    float p = ((((((((0.0028498742f * s - 0.016068569f) * s + 0.042691423f) * s - 0.075042865f) * s + 0.10640930f) * s -
-                  0.14203643f) * s + 0.19992619f) * s - 0.33333073f) * s + 0.99999998f);
-    float a = t * p;
-    if (steep) a = 1.5707963f - a;
-    if (x < 0) a = 3.1415927f - a;
-    return std::copysign(a, y);
-  }
-}
-
 // asinh(xb) - asinh(xa) for xb = xa + dx, dx >= 0, is log1p of this argument, given
 // sa = sqrt(1 + xa^2) and sb = sqrt(1 + xb^2); written without the cancellation of the naive
 // difference when both are large and of one sign: mirrored so that the larger magnitude

@@ -13,6 +13,21 @@
 
 namespace vrlis {
 
+// The precision the Cauchy samplers solve for their samples in: double for float.
+template <typename Real>
+using Widened = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
+
+// (sin s, cos s) in Widened<Real>, for a sample's solve. In float, sincosf (glibc: within
+// an ulp, computed in double and rounded, so each of sin and cos follows s monotonically)
+// suffices: the pair's angle is s to about an ulp, as if u had an ulp more rounding (the
+// round trip allows hundreds), and it never decreases as s increases, so samples keep
+// their order; the solve that follows, where digits cancel, stays in double.
+template <typename Real>
+SinCosPair<Widened<Real>> WidenedSinCos(Real s) {
+  SinCosPair<Real> e = SinCos(s);
+  return {e.sin, e.cos};
+}
+
 template <typename Real>
 class TruncatedCauchy {
  public:
@@ -24,15 +39,16 @@ class TruncatedCauchy {
   // gamma / ((delta - mu)^2 + gamma^2): pi times the Cauchy density; integrates to mass().
   Real density(Real delta) const { return scale_ / (Sqr(delta - location_) + Sqr(scale_)); }
   // Its integral over [0, delta]: arg z(delta), z = Re(delta) + i delta.
-  Real primitive(Real delta) const { return Atan2(delta, Re(delta)); }
+  // (Branch-free: its octant is random across queries.)
+  Real primitive(Real delta) const { return Atan2Lanes(delta, Re(delta)); }
   // The delta whose primitive is s, for s in [0, mass()]: delta cos s = Re(delta) sin s.
   // Solved in double for float: next to a narrow peak the denominator cancels, and a float
   // solve would reverse neighbouring samples.
   Real inverse_primitive(Real s) const {
-    using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
-    W sn = std::sin(W(s)), denom = std::cos(W(s)) + W(location_) / scale_ * sn;
-    W re0 = W(scale_) + W(location_) * (W(location_) / scale_);
-    return denom > 0 ? Clamp(Real(re0 * sn / denom), Real(0), width_) : width_;
+    using W = Widened<Real>;
+    SinCosPair<W> e = WidenedSinCos(s);
+    W ratio = W(location_) / scale_, denom = e.cos + ratio * e.sin;
+    return denom > 0 ? Clamp(Real((scale_ + location_ * ratio) * e.sin / denom), Real(0), width_) : width_;
   }
   Real mass() const { return mass_; }
   Real location() const { return location_; }

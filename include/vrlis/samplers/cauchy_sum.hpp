@@ -7,7 +7,6 @@
 // quadratic's slope is +sqrt(disc).
 #include <algorithm>
 #include <string_view>
-#include <type_traits>
 
 #include "../angle/segment_sampler.hpp"
 #include "cauchy_lobe.hpp"
@@ -63,7 +62,7 @@ class CauchySumAngle {
   // ill-conditioned quadratic is not, and where the density is low its errors reverse samples.
   // Returns the offset and its density (pdf()), the latter from x and the offsets e_k.
   SegmentSample<Real> SampleQuadratic(Real s) const {
-    using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
+    using W = Widened<Real>;
     const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
     Real c = Clamp((c1.scale() < c2.scale() ? c1 : c2).location(), Real(0), width_);
     W e1 = W(c) - c1.location(), e2 = W(c) - c2.location(), g1 = c1.scale(), g2 = c2.scale();
@@ -71,8 +70,8 @@ class CauchySumAngle {
     // (cos K, sin K) up to a positive factor (the equation is homogeneous in them). Inside,
     // F(c) = arg z1(c) + arg z2(c) = arg w with w = z1(c) z2(c), z_k(c) = Re_k(c) + i c, so
     // e^{iK} is e^{is} rotated back by w: no arctangent for F(c).
-    W k = c == width_ ? W(s) - W(mass_) : W(s);
-    W sn = std::sin(k), cs = std::cos(k);
+    SinCosPair<W> e = WidenedSinCos(c == width_ ? s - mass_ : s);
+    W sn = e.sin, cs = e.cos;
     if (c > 0 && c < width_) {
       W r1 = g1 - W(c1.location()) * e1 / g1, r2 = g2 - W(c2.location()) * e2 / g2;
       W re = r1 * r2 - W(c) * W(c), im = W(c) * (r1 + r2);
@@ -83,14 +82,15 @@ class CauchySumAngle {
     W a = (g2 * e1 + g1 * e2) * cs - (e1 * e2 - g1 * g2) * sn;
     W b = (g2 * p1 + g1 * p2) * cs - (p1 * e2 + p2 * e1) * sn;
     W c0 = -p1 * p2 * sn;
-    W norm = std::max({std::abs(a), std::abs(b), std::abs(c0)});  // keep b^2 - 4ac finite
-    a /= norm;
-    b /= norm;
-    c0 /= norm;
+    W inv_norm = 1 / std::max({std::abs(a), std::abs(b), std::abs(c0)});  // keep b^2 - 4ac finite
+    a *= inv_norm;
+    b *= inv_norm;
+    c0 *= inv_norm;
     W root = SafeSqrt(b * b - 4 * a * c0);
     // The root where the argument crosses K increasing, (-b + root) / (2a), in whichever
-    // form does not cancel.
-    W x = b > 0 ? -2 * c0 / (b + root) : (-b + root) / (2 * a);
+    // form does not cancel (selected, not branched: the sign of b is random across queries).
+    bool positive = b > 0;
+    W x = (positive ? -2 * c0 : root - b) / (positive ? b + root : 2 * a);
     Real delta = Real(c + x);
     if (!(delta >= 0 && delta <= width_)) {  // clamped (NaN to 0): the density where it lands
       delta = delta >= 0 ? width_ : Real(0);
