@@ -39,6 +39,12 @@ template <typename Real>
   return dx * (1 + std::abs(sum) / (sa + sb)) / near_plus_s;
 }
 
+// asinh(x) for x >= 0 is log1p of x + x^2 / (1 + s), s = sqrt(1 + x^2) (no cancellation).
+template <typename Real>
+[[gnu::always_inline]] inline Real AsinhArgument(Real x, Real s) {
+  return x * (1 + x / (1 + s));
+}
+
 // asinh(xa + dx) - asinh(xa) for dx >= 0 (AsinhDifferenceArgument).
 template <typename Real>
 Real AsinhDifference(Real xa, Real dx) {

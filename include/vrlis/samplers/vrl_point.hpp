@@ -49,64 +49,81 @@ template <typename Real>
 struct VrlPointDensity {
   Real tmin = 0, tmax = 0;
   Real k = 0, xa = 0, total = 0;      // x(v) = xa + k (v - tmin); k = 0: uniform
-  Real start = 0, x0 = 0, before = 0;  // the walk: where it starts, |x| there, the CDF there
+  Real sa = 1, sb = 1;                 // sqrt(1 + x^2) at tmin and at tmax
+  Real start = 0, x0 = 0, r0 = 1, before = 0;  // the walk: where it starts, |x| and sqrt(1 + x^2) there, the CDF there
 };
 
-// The fit for a valid query of representable length. Branch-free (every case computed,
-// then selected), so that a loop over VRLs vectorises (SampleVrlPoints).
-template <typename Real>
+// c ? a : b. kLanes: by bit masks, both computed (SelectLanes), for loops that vectorise
+// (SampleVrlPoints); else a plain choice, which lets one VRL at a time skip the other case.
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline Real Pick(bool c, Real a, Real b) {
+  if constexpr (kLanes) {
+    return SelectLanes(c, a, b);
+  } else {
+    return c ? a : b;
+  }
+}
+
+// The fit for a valid query of representable length. With kLanes branch-free (every case
+// computed, then selected), so that a loop over VRLs vectorises.
+template <bool kLanes, typename Real>
 [[gnu::always_inline]] inline VrlPointDensity<Real> FitVrlPointDensity(const VrlPointQuery<Real>& q) {
   VrlPointDensity<Real> f;
   f.tmin = q.tmin;
   f.tmax = q.tmax;
   Vec3<Real> d = q.line_origin - q.origin, cross = Cross(q.dir, q.line_dir);
   Real sin2 = Dot(cross, cross), inv_sin_a = RsqrtLanes(sin2), sin_a = sin2 * inv_sin_a;
-  // (Selects, not std::max or std::min, here and below: their branches would take the
-  // arithmetic that follows into them, and the loop would stay scalar.)
-  Real h = std::abs(Dot(d, cross)) * inv_sin_a, floor = NoiseFloor(SqrtLanes(Dot(d, d)) + std::abs(q.tmin) + std::abs(q.tmax));
-  h = SelectLanes(h < floor, floor, h);
+  // (Picks, not std::max or std::min, here and below: their branches would take the
+  // arithmetic that follows into them, and a loop over lanes would stay scalar.)
+  Real h = std::abs(Dot(d, cross)) * inv_sin_a,
+       floor = NoiseFloor(std::abs(d.x) + std::abs(d.y) + std::abs(d.z) + std::abs(q.tmin) + std::abs(q.tmax));
+  h = Pick<kLanes>(h < floor, floor, h);
   Real v0 = (Dot(d, q.dir) - Dot(d, q.line_dir) * Dot(q.dir, q.line_dir)) * Sqr(inv_sin_a);
   Real k = sin_a / h, kl = k * (q.tmax - q.tmin);
   Real xa = k * (q.tmin - v0), xb = xa + kl;
   Real sa = SqrtLanes(1 + xa * xa), sb = SqrtLanes(1 + xb * xb);
   bool inside = (xa < 0) & (xb > 0), from_tmin = xa >= 0;
-  // Inside: the masses of [tmin, v0] and [v0, tmax]; else the whole mass and 0.
-  Real a = Log1pLanes(SelectLanes(inside, AsinhDifferenceArgument(xa, -xa, sa, Real(1)),
-                                  AsinhDifferenceArgument(xa, kl, sa, sb)));
-  Real b = Log1pLanes(SelectLanes(inside, AsinhDifferenceArgument(Real(0), xb, Real(1), sb), Real(0)));
+  // Inside: the masses of [tmin, v0] and [v0, tmax], asinh(-xa) and asinh(xb); else the whole
+  // mass and 0.
+  Real a = Log1pLanes(Pick<kLanes>(inside, AsinhArgument(-xa, sa), AsinhDifferenceArgument(xa, kl, sa, sb)));
+  Real b = Log1pLanes(Pick<kLanes>(inside, AsinhArgument(xb, sb), Real(0)));
   f.total = a + b;
-  f.start = SelectLanes(inside, v0, SelectLanes(from_tmin, q.tmin, q.tmax));
-  f.x0 = SelectLanes(inside, Real(0), SelectLanes(from_tmin, xa, -xb));
-  f.before = SelectLanes(inside, a, SelectLanes(from_tmin, Real(0), f.total));
+  f.sa = sa;
+  f.sb = sb;
+  f.start = Pick<kLanes>(inside, v0, Pick<kLanes>(from_tmin, q.tmin, q.tmax));
+  f.x0 = Pick<kLanes>(inside, Real(0), Pick<kLanes>(from_tmin, xa, -xb));
+  f.r0 = Pick<kLanes>(inside, Real(1), Pick<kLanes>(from_tmin, sa, sb));
+  f.before = Pick<kLanes>(inside, a, Pick<kLanes>(from_tmin, Real(0), f.total));
   f.xa = xa;
   // Uniform: parallel lines; a density that varies by at most k L / 2 < epsilon over the VRL
   // (the asinh difference of a subnormal k L would have no digits left); no finite mass.
   bool uniform = !(sin_a > 0) | !(kl > std::numeric_limits<Real>::epsilon()) | !(f.total > 0) |
                  !(f.total <= std::numeric_limits<Real>::max());
-  f.k = SelectLanes(uniform, Real(0), k);
+  f.k = Pick<kLanes>(uniform, Real(0), k);
   return f;
 }
 
-// A sample and its density, branch-free. The walk covers the mass |e| from its start: for
+// A sample and its density, with kLanes branch-free. The walk covers the mass |e| from its start: for
 // x0 >= 0 and x1 = sinh(asinh(x0) + |e|), x1 - x0 and sqrt(1 + x1^2) = cosh(...) as sums of
 // positive terms. One expm1 gives both hyperbolic functions of |e|: with m = expm1(|e| / 2),
 // sinh(|e| / 2) = m (m + 2) / (2 (m + 1)), cosh(|e| / 2) - 1 = m^2 / (2 (m + 1)) and
 // sinh(|e|) = 2 sinh(|e| / 2) cosh(|e| / 2).
-template <typename Real>
+template <bool kLanes, typename Real>
 [[gnu::always_inline]] inline SegmentSample<Real> SampleVrlPointDensity(const VrlPointDensity<Real>& f, Real u) {
   Real e = u * f.total - f.before;  // the mass from the start to the sample, signed by direction
   Real m = Expm1Lanes(std::abs(e) / 2), inv = 1 / (2 * (m + 1));
   Real sh_half = m * (m + 2) * inv, ch_half = 1 + m * m * inv;
-  Real half = 2 * Sqr(sh_half), sh = 2 * sh_half * ch_half, r0 = SqrtLanes(1 + f.x0 * f.x0);
-  Real dx = f.x0 * half + r0 * sh, root = r0 * (1 + half) + f.x0 * sh;
+  Real half = 2 * Sqr(sh_half), sh = 2 * sh_half * ch_half;
+  Real dx = f.x0 * half + f.r0 * sh, root = f.r0 * (1 + half) + f.x0 * sh;
   Real v = f.start + std::copysign(dx, e) / f.k;
   // Rounding may step past an end: clamped, with the density where it lands.
-  Real vc = SelectLanes(v < f.tmin, f.tmin, SelectLanes(v > f.tmax, f.tmax, v)), xc = f.xa + f.k * (vc - f.tmin);
-  Real pdf = f.k / (f.total * SelectLanes(vc == v, root, SqrtLanes(1 + xc * xc)));
+  bool below = v < f.tmin, above = v > f.tmax;
+  Real vc = Pick<kLanes>(below, f.tmin, Pick<kLanes>(above, f.tmax, v));
+  Real pdf = f.k / (f.total * Pick<kLanes>(below, f.sa, Pick<kLanes>(above, f.sb, root)));
   Real length = f.tmax - f.tmin, uniform_t = f.tmin + u * length;
   bool uniform = f.k == 0;
-  uniform_t = SelectLanes(uniform_t > f.tmax, f.tmax, uniform_t);
-  return {SelectLanes(uniform, uniform_t, vc), SelectLanes(uniform, 1 / length, pdf)};
+  uniform_t = Pick<kLanes>(uniform_t > f.tmax, f.tmax, uniform_t);
+  return {Pick<kLanes>(uniform, uniform_t, vc), Pick<kLanes>(uniform, 1 / length, pdf)};
 }
 
 }  // namespace detail
@@ -136,7 +153,7 @@ class VrlPoint {
   VrlPoint(const VrlPointQuery<Real>& q, QueryError error) : error_(error) {
     density_.tmin = q.tmin;
     density_.tmax = q.tmax;
-    if (valid() && Representable()) density_ = detail::FitVrlPointDensity(q);
+    if (valid() && Representable()) density_ = detail::FitVrlPointDensity<false>(q);
   }
 
  public:
@@ -154,7 +171,7 @@ class VrlPoint {
   SegmentSample<Real> sample_pdf(Real u) const {
     if (!valid()) return {kNaN, 0};
     if (!Representable()) return {density_.tmin, 0};
-    return detail::SampleVrlPointDensity(density_, u);
+    return detail::SampleVrlPointDensity<false>(density_, u);
   }
 
   Real invert(Real v) const {
@@ -197,7 +214,7 @@ void SampleVrlPoints(ValidQuery, const RaySegment<Real>& camera, const VrlSegmen
   Real t[kVrlPointBatch], pdf[kVrlPointBatch];
   for (int i = 0; i < kVrlPointBatch; ++i) {
     VrlPointQuery<Real> q{{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, 0, length[i], camera.origin, camera.dir};
-    SegmentSample<Real> s = detail::SampleVrlPointDensity(detail::FitVrlPointDensity(q), uu[i]);
+    SegmentSample<Real> s = detail::SampleVrlPointDensity<true>(detail::FitVrlPointDensity<true>(q), uu[i]);
     bool representable = RepresentableLength(length[i]);  // else tmin with pdf 0, as VrlPoint
     t[i] = SelectLanes(representable, s.t, Real(0));
     pdf[i] = SelectLanes(representable, s.pdf, Real(0));
