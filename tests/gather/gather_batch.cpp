@@ -94,5 +94,5 @@ void BatchIsOneAtATime() {
 
 }  // namespace
 
-TEST_CASE("batched medium gather: bitwise the one-VRL gather, every method (float)") { BatchIsOneAtATime<float>(); }
-TEST_CASE("batched medium gather: bitwise the one-VRL gather, every method (double)") { BatchIsOneAtATime<double>(); }
+TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (float)") { BatchIsOneAtATime<float>(); }
+TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (double)") { BatchIsOneAtATime<double>(); }
