@@ -5,6 +5,8 @@
 // evaluation (over the nodes); inside an interval the linear density is inverted in closed
 // form. Equal nodes make an interval of zero area that is never sampled.
 #include <array>
+#include <cmath>
+#include <type_traits>
 
 #include "math.hpp"
 #include "query.hpp"
@@ -17,10 +19,14 @@ Real Lerp(Real s, Real a, Real b) { return a + s * (b - a); }
 
 // The s in [0, 1] whose CDF under the density proportional to Lerp(s, f0, f1) is v: the
 // root of (f1 - f0) s^2 / 2 + f0 s = v (f0 + f1) / 2 in the form that does not cancel.
+// Numerator and denominator both grow with v, so in float their rounding can make s step
+// back by an ulp as v grows (and t, through a steep map from the angle, by many); float
+// evaluates it in double, where such a step is far below float's ulp.
 template <typename Real>
 Real SampleLinear(Real v, Real f0, Real f1) {
-  Real denom = f0 + std::sqrt(Sqr(f0) + v * (Sqr(f1) - Sqr(f0)));
-  return denom > 0 ? Clamp(v * (f0 + f1) / denom, Real(0), Real(1)) : v;
+  using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
+  W a = f0, b = f1, denom = a + std::sqrt(a * a + W(v) * (b * b - a * a));
+  return denom > 0 ? Real(Clamp(W(v) * (a + b) / denom, W(0), W(1))) : v;
 }
 
 // The largest j in [0, count - 2] with a[j] <= x (0 if there is none), for a nondecreasing a.

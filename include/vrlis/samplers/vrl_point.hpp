@@ -95,11 +95,12 @@ template <bool kLanes, typename Real>
   f.r0 = Pick<kLanes>(inside, Real(1), Pick<kLanes>(from_tmin, sa, sb));
   f.before = Pick<kLanes>(inside, a, Pick<kLanes>(from_tmin, Real(0), f.total));
   f.xa = xa;
-  // Uniform: parallel lines; a density that varies by at most k L / 2 < epsilon over the VRL
-  // (the asinh difference of a subnormal k L would have no digits left); no finite mass.
-  bool uniform = !(sin_a > 0) | !(kl > std::numeric_limits<Real>::epsilon()) | !(f.total > 0) |
-                 !(f.total <= std::numeric_limits<Real>::max());
-  f.k = Pick<kLanes>(uniform, Real(0), k);
+  // Else uniform: parallel lines; a density that varies by at most k L / 2 < epsilon over the
+  // VRL (the asinh difference of a subnormal k L would have no digits left); no finite mass.
+  bool lines_shape = (sin_a > 0) & (kl > std::numeric_limits<Real>::epsilon());
+  bool finite_mass = (f.total > 0) & (f.total <= std::numeric_limits<Real>::max());
+  bool shaped = lines_shape & finite_mass;
+  f.k = Pick<kLanes>(shaped, k, Real(0));
   return f;
 }
 
