@@ -97,7 +97,7 @@ if m and wins:
 
 # 4. VrlMarginal's cost per sample.
 m = prose(r"about ([\d.]+) us per sample")
-vm = re.search(r"VrlMarginal alone \(fit \+ sample \+ pdf; (\d+) nodes.*?\): (\d+) ns", bench)
+vm = re.search(r"VrlMarginal alone \(fit \+ sample_pdf; (\d+) nodes.*?\): (\d+) ns", bench)
 if m and vm:
     check(near(float(m.group(1)) * 1000, float(vm.group(2)), 1.15),
           f"VrlMarginal cost: README {m.group(1)} us, docs/bench.md {vm.group(2)} ns")
