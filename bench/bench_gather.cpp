@@ -3,6 +3,9 @@
 //   Gather/<method>/g:<g>   SampleMediumGather: validation, step one (VrlPoint: fit, sample,
 //                           pdf), the camera sampler chosen at run time (fit, sample, pdf),
 //                           the integrand and the weight; everything but the occlusion ray
+//   GatherBatch/<method>/g:<g>  SampleMediumGathers: one camera segment against kVrlPointBatch
+//                           VRLs (the camera of configuration 8k, the VRLs of 8k .. 8k + 7),
+//                           time per iteration, that is per batch (divide by 8 for one gather)
 //   GatherPart/validate     Validate(MediumGatherQuery)
 //   GatherPart/step-one     VrlPoint from the gather query, sample_pdf
 //   GatherPart/integrand    MediumGatherIntegrand at a sampled (t, v), with its transmittance
@@ -13,6 +16,8 @@
 #include "bench_common.hpp"
 
 #include <vrlis/gather/medium_gather.hpp>
+
+#include <vector>
 
 namespace vrlis::bench {
 namespace {
@@ -28,6 +33,31 @@ void Gather(benchmark::State& state, Method method, double g) {
     GatherSample<float> s = SampleMediumGather(m, pools.configs[i].query, pools.configs[i].xi_vrl, pools.configs[i].xi_cam);
     benchmark::DoNotOptimize(s);
   });
+}
+
+void GatherBatch(benchmark::State& state, Method method, double g) {
+  const Pools& pools = PoolsFor(g);
+  std::vector<VrlSegment<float>> vrls;
+  std::vector<float> u_vrl, u_camera;
+  for (const Config<float>& c : pools.configs) {
+    vrls.push_back(c.query.vrl);
+    u_vrl.push_back(c.xi_vrl);
+    u_camera.push_back(c.xi_cam);
+  }
+  const size_t batches = vrls.size() / kVrlPointBatch;
+  WithGatherSamplers<float>(GatherMethod{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
+    GatherSample<float> out[kVrlPointBatch];
+    size_t b = 0;
+    for (auto _ : state) {
+      const size_t first = b * kVrlPointBatch;
+      const MediumGatherQuery<float>& q = pools.configs[first].query;
+      SampleMediumGathers<typename decltype(step_one)::type, typename decltype(step_two)::type>(
+          ValidQuery{}, q.camera, q.medium, &vrls[first], kVrlPointBatch, &u_vrl[first], &u_camera[first], out);
+      benchmark::DoNotOptimize(out);
+      b = b + 1 == batches ? 0 : b + 1;
+    }
+  });
+  state.SetItemsProcessed(state.iterations() * kVrlPointBatch);
 }
 
 void Validation(benchmark::State& state) {
@@ -67,6 +97,10 @@ void RegisterGather() {
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("Gather", std::string(method.name()).c_str(), g).c_str(),
                                    [method, g](benchmark::State& s) { Gather(s, method, g); });
+  for (Method method : kMethods)
+    for (double g : kGatherG)
+      benchmark::RegisterBenchmark(BenchName("GatherBatch", std::string(method.name()).c_str(), g).c_str(),
+                                   [method, g](benchmark::State& s) { GatherBatch(s, method, g); });
   benchmark::RegisterBenchmark("GatherPart/validate", Validation);
   benchmark::RegisterBenchmark("GatherPart/step-one", StepOne);
   benchmark::RegisterBenchmark("GatherPart/integrand", Integrand);

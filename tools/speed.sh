@@ -124,14 +124,17 @@ for g in gs:
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
          if b.get("aggregate_name") == "median"}
-print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray)\n")
-print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest |")
-print("|---|---|---|---|---|---|---|---|---|")
+print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
+      "one VRL at a time; the last column: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
+      "the renderer's call)\n")
+print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest | batched gather |")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
     for g in (-0.9, 0.5, 0.9):
         whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], t("new", c, g)
         v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
-        print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} |")
+        batched = parts[f"GatherBatch/{c}/g:{g:.2f}"] / 8
+        print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} |")
 try:
     prof = open(f"{out}/runs/perf.txt").read().rstrip()
     print("\nProfile of `vrl_render --scene bidirectional --sampler novak --threads 1` (perf, self time, top symbols):\n")
