@@ -125,8 +125,23 @@ inline std::uint32_t BitsOfFloat(float x) {
   std::memcpy(&bits, &x, sizeof bits);
   return bits;
 }
-// ln 2 = kLn2Hi + kLn2Lo, kLn2Hi with 16 significant bits, so that k kLn2Hi is exact for |k| < 256.
+// x = k ln 2 + r with k the nearest integer to x / ln 2 (the rounding trick of SinCosLanes:
+// adding 1.5 * 2^23 leaves k in the low mantissa bits) and |r| <= ln(2) / 2; ln 2 is split in
+// two floats, the first with 16 significant bits, so that k times it is exact for |k| < 256.
 constexpr float kLn2Hi = 0.693145751953125f, kLn2Lo = 1.42860682030941723212e-6f;
+struct Ln2Reduction {
+  float kf;        // k as a float
+  std::int32_t k;  // k as an integer
+  float r;
+};
+[[gnu::always_inline]] inline Ln2Reduction ReduceLn2(float x) {
+  constexpr float kShift = 12582912.0f;
+  float shifted = x * 1.44269504f + kShift;
+  float kf = shifted - kShift;
+  return {kf, static_cast<std::int32_t>(BitsOfFloat(shifted) - BitsOfFloat(kShift)), (x - kf * kLn2Hi) - kf * kLn2Lo};
+}
+// 2^k for k in [-126, 127], put into the exponent bits.
+[[gnu::always_inline]] inline float TwoToThe(std::int32_t k) { return FloatFromBits(static_cast<std::uint32_t>(k + 127) << 23); }
 }  // namespace detail
 
 // log(1 + x) for x >= -1 (-1 gives -inf, below it NaN, +inf and NaN pass through).
@@ -157,7 +172,7 @@ template <typename Real>
   }
 }
 
-// exp(x) - 1. x = k ln 2 + r with |r| <= ln(2)/2, expm1(r) by its Taylor series to r^8 (the
+// exp(x) - 1. x = k ln 2 + r with |r| <= ln(2)/2 (detail::ReduceLn2), expm1(r) by its Taylor series to r^8 (the
 // rest is below 6e-10 of it), then 2^k (1 + p) - 1 = 2^k p + (2^k - 1), whose second term is
 // exact for k <= 24; above, 2^(k - 1) (1 + p) 2 - 1, which overflows to +inf past float's range
 // as it should. x is clamped to [-20, 88.8] first (expm1 is -1 in float below -17.4 and
@@ -169,23 +184,17 @@ template <typename Real>
     return std::expm1(x);
   } else {
     float xc = SelectLanes(x < -20.0f, -20.0f, SelectLanes(x > 88.8f, 88.8f, x));
-    constexpr float kShift = 12582912.0f;  // 1.5 * 2^23: rounds to an integer left in the low bits
-    float shifted = xc * 1.44269504f + kShift;
-    float kf = shifted - kShift;
-    std::int32_t k = static_cast<std::int32_t>(detail::BitsOfFloat(shifted) - detail::BitsOfFloat(kShift));
-    float r = (xc - kf * detail::kLn2Hi) - kf * detail::kLn2Lo;
+    detail::Ln2Reduction red = detail::ReduceLn2(xc);
+    float r = red.r;
     float p = r + r * r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f + r * (8.3333333e-3f +
                                       r * (1.3888889e-3f + r * (1.9841270e-4f + r * 2.4801587e-5f))))));
-    float scale = detail::FloatFromBits(static_cast<std::uint32_t>(k + 127) << 23);
-    float half_scale = detail::FloatFromBits(static_cast<std::uint32_t>(k + 126) << 23);
-    return SelectLanes(kf <= 24, scale * p + (scale - 1), half_scale * (1 + p) * 2 - 1);
+    float scale = detail::TwoToThe(red.k), half_scale = detail::TwoToThe(red.k - 1);
+    return SelectLanes(red.kf <= 24, scale * p + (scale - 1), half_scale * (1 + p) * 2 - 1);
   }
 }
 
-// exp(x) for x <= 88, vectorisable in float: x = k ln 2 + r with k the nearest integer to
-// x / ln 2 (the rounding trick of SinCosLanes; ln 2 split in two floats, the first with 15
-// significant bits, so that k times it is exact for |k| <= 127), the Taylor series of exp r
-// to r^7 on |r| <= ln(2) / 2 (truncation below (ln(2)/2)^8 / 8! = 5e-9, under float's half
+// exp(x) for x <= 88, vectorisable in float: x = k ln 2 + r (detail::ReduceLn2), the Taylor
+// series of exp r to r^7 on |r| <= ln(2) / 2 (truncation below (ln(2)/2)^8 / 8! = 5e-9, under float's half
 // ulp), then 2^k put into the exponent bits. Within 2 ulp of exp (tests/lib/lane_math.cpp)
 // down to the smallest normal float; below it (x < -87.3, subnormal results) 0, and
 // exp(-inf) = 0. NaN propagates.
@@ -195,31 +204,14 @@ template <typename Real>
     return std::exp(x);
   } else {
     constexpr float kSmallest = -87.33654f;  // ln of the smallest normal float
-    constexpr float kShift = 12582912.0f;
-    float shifted = x * 1.44269504088896341f + kShift;
-    float k = shifted - kShift;
-    std::uint32_t bits;
-    std::memcpy(&bits, &shifted, sizeof bits);
-    float r = (x - k * 0.693145751953125f) - k * 1.428606765330187e-6f;
+    detail::Ln2Reduction red = detail::ReduceLn2(x);
+    float r = red.r;
     float p = 1 + r * (1 + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f + r * (8.3333333e-3f + r * (1.3888889e-3f + r * 1.9841270e-4f))))));
-    // shifted's bits minus kShift's are k; k + 127 is the biased exponent of 2^k.
-    std::uint32_t scale_bits = (bits - 0x4B400000u + 127u) << 23;
-    float scale;
-    std::memcpy(&scale, &scale_bits, sizeof scale);
-    float out = p * scale;
-    // Below kSmallest 2^k is no normal float, and the result is zeroed, with a bit mask: a
-    // select (or clamping x first) stops compilers from vectorising.
-    std::uint32_t out_bits, keep = 0u - std::uint32_t(!(x < kSmallest));
-    std::memcpy(&out_bits, &out, sizeof out_bits);
-    out_bits &= keep;
-    std::memcpy(&out, &out_bits, sizeof out);
-    return out;
+    // Below kSmallest 2^k is no normal float: 0, by a select (SelectLanes, so that loops vectorise).
+    return SelectLanes(x < kSmallest, 0.0f, p * detail::TwoToThe(red.k));
   }
 }
 
-}  // namespace vrlis
-
-namespace vrlis {
 
 // atan2 for the samplers' hot paths. glibc's atan2f costs several times its sinf, and the
 // Cauchy samplers are made of arctangents, so float gets a polynomial: atan(t) = t P(t^2)

@@ -24,6 +24,11 @@ Real SafeSqrt(Real x) { return std::sqrt(std::max(x, Real(0))); }
 template <typename Real>
 constexpr Real Clamp(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
 
+// The precision a float computation runs in where rounding would reverse the order of
+// neighbouring samples: double for float.
+template <typename Real>
+using Widened = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
+
 // asinh(xb) - asinh(xa) for xb = xa + dx, dx >= 0, is log1p of this argument, given
 // sa = sqrt(1 + xa^2) and sb = sqrt(1 + xb^2); written without the cancellation of the naive
 // difference when both are large and of one sign: mirrored so that the larger magnitude

@@ -6,7 +6,6 @@
 // form. Equal nodes make an interval of zero area that is never sampled.
 #include <array>
 #include <cmath>
-#include <type_traits>
 
 #include "math.hpp"
 #include "query.hpp"
@@ -24,7 +23,7 @@ Real Lerp(Real s, Real a, Real b) { return a + s * (b - a); }
 // evaluates it in double, where such a step is far below float's ulp.
 template <typename Real>
 Real SampleLinear(Real v, Real f0, Real f1) {
-  using W = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
+  using W = Widened<Real>;
   W a = f0, b = f1, denom = a + std::sqrt(a * a + W(v) * (b * b - a * a));
   return denom > 0 ? Real(Clamp(W(v) * (a + b) / denom, W(0), W(1))) : v;
 }

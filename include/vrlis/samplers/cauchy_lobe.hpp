@@ -13,10 +13,6 @@
 
 namespace vrlis {
 
-// The precision the Cauchy samplers solve for their samples in: double for float.
-template <typename Real>
-using Widened = std::conditional_t<std::is_same_v<Real, float>, double, Real>;
-
 // (sin s, cos s) in Widened<Real>, for a sample's solve. In float, sincosf (glibc: within
 // an ulp, computed in double and rounded, so each of sin and cos follows s monotonically)
 // suffices: the pair's angle is s to about an ulp, as if u had an ulp more rounding (the

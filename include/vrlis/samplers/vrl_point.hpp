@@ -214,7 +214,7 @@ void SampleVrlPoints(ValidQuery, const RaySegment<Real>& camera, const VrlSegmen
   }
   Real t[kVrlPointBatch], pdf[kVrlPointBatch];
   for (int i = 0; i < kVrlPointBatch; ++i) {
-    VrlPointQuery<Real> q{{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, 0, length[i], camera.origin, camera.dir};
+    VrlPointQuery<Real> q = VrlPoint<Real>::LineQuery(camera, {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, length[i]});
     SegmentSample<Real> s = detail::SampleVrlPointDensity<true>(detail::FitVrlPointDensity<true>(q), uu[i]);
     bool representable = RepresentableLength(length[i]);  // else tmin with pdf 0, as VrlPoint
     t[i] = SelectLanes(representable, s.t, Real(0));
