@@ -25,15 +25,15 @@ class FullProductTarget {
   static constexpr Real kRelativeFloor = Real(1e-3);
 
   FullProductTarget(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
-      : phase_(q, dom),
-        depth_scale_(q.sigma_t * dom.h() / std::cos(phase_.segment_half_angle(0))),
-        sigma_h_(q.sigma_t * dom.h()),
-        width_(dom.width()) {}
+      : phase_(q, dom), sigma_h_(q.sigma_t * dom.h()), width_(dom.width()) {}
 
   Real operator()(Real delta) const {
     Real half = phase_.segment_half_angle(delta), sin_half = std::sin(half), cos_half = std::cos(half);
     Real value = phase_.segment_lobe(sin_half, cos_half) * phase_.point_lobe(delta);
-    if (depth_scale_ > 0) value *= std::exp(-depth_scale_ * std::sin(delta / 2) / std::max(cos_half, Real(0)));
+    if (sigma_h_ > 0) {
+      Real cos_half_a = std::cos(phase_.segment_half_angle(0));
+      value *= std::exp(-sigma_h_ * std::sin(delta / 2) / (cos_half_a * std::max(cos_half, Real(0))));
+    }
     return value;
   }
   // The value at every offset in `delta` (a fit's nodes): the phase product's branch-free
@@ -43,12 +43,14 @@ class FullProductTarget {
   template <std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
     phase_.evaluate(delta, out);
-    if (!(depth_scale_ > 0)) return;
+    if (!(sigma_h_ > 0)) return;
+    // pole.cos = cos(x_a / 2): the optical depth's constant factor comes with it.
     const SinCosPair<Real> pole = SinCosLanes(phase_.lower_pole() / 2);
+    const Real depth_scale = sigma_h_ / pole.cos;
     for (std::size_t j = 0; j < N; ++j) {
       SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
       Real cos_half = half.cos * pole.cos + half.sin * pole.sin;
-      out[j] *= ExpLanes(-depth_scale_ * half.sin / std::max(cos_half, Real(0)));
+      out[j] *= ExpLanes(-depth_scale * half.sin / std::max(cos_half, Real(0)));
     }
   }
 
@@ -73,33 +75,37 @@ class FullProductTarget {
 
   // With y = x/2 the segment lobe's half scattering angle and c = cos y, the log-derivative
   // of lobe x transmittance in x vanishes where 12 |g| sin(y) c^3 = sigma_t h D(c), D the
-  // lobe's denominator (1 + g)^2 + 4 |g| c^2 (g < 0). Along x the product rises where the
-  // left side is larger; its maximum is the smaller positive root in c. Newton from the
-  // root of the leading terms, 12 |g| c^3 = sigma_t h (1 + g)^2, which lies below it.
-  // Returns the peak's offset, or -1 when the product has no interior peak.
+  // lobe's denominator (1 + g)^2 + 4 |g| c^2 (g < 0). Divided by c^4 and written in
+  // t = tan y (w = 1 + t^2 = 1 / c^2) it is the root of a quartic with no square roots,
+  //   P(t) = sigma_t h ((1 + g)^2 w^2 + 4 |g| w) - 12 |g| t,
+  // negative where the product rises along x. P is convex, so its maximum is P's larger
+  // root, and Newton from the right of it descends to it monotonically. A start there: where
+  // the quartic term alone, or the quadratic one alone, outweighs 12 |g| t, i.e. the smaller
+  // of t^3 = 12 |g| / (sigma_t h (1 + g)^2) and t = 3 / (sigma_t h); at either P > 0 and
+  // P' >= 12 |g| > 0. Returns the peak's offset, or -1 when the product has no interior
+  // peak (P positive throughout: the iteration meets P' <= 0 or stalls).
   Real SegmentTransmittancePeak() const {
     Real g = phase_.segment_g();
     if (!(g < 0) || !(sigma_h_ > 0)) return -1;
-    Real a = -g, k = 12 * a, base = Sqr(1 + g);
-    Real c = std::cbrt(sigma_h_ * base / k);
-    for (int i = 0; i < 8 && c < 1; ++i) {
-      Real s = std::sqrt(1 - c * c);
-      Real f = k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c);
-      Real df = k * (3 * s * c * c - c * c * c * c / s) - 8 * a * sigma_h_ * c;
-      if (!(df > 0)) return -1;  // past the maximum of the left side: no crossing from below
-      Real step = f / df;
-      c -= step;
-      if (std::abs(step) <= std::numeric_limits<Real>::epsilon() * c) break;  // converged: further steps only round
+    Real a = -g, k = 12 * a, quartic = sigma_h_ * Sqr(1 + g), quadratic = 4 * a * sigma_h_;
+    Real t = std::min(std::cbrt(k / quartic), 3 / sigma_h_);
+    if (!std::isfinite(t)) return -1;
+    Real p = 0;
+    for (int i = 0; i < 8; ++i) {
+      Real w = 1 + t * t;
+      p = (quartic * w + quadratic) * w - k * t;
+      Real dp = (4 * quartic * w + 2 * quadratic) * t - k;
+      if (!(dp > 0)) return -1;  // left of P's minimum: no root to its right
+      Real step = p / dp;
+      t -= step;
+      if (step <= Real(1e-4) * t) break;  // the next step would be below float rounding
     }
-    if (!(c > 0 && c < 1)) return -1;
-    Real s = std::sqrt(1 - c * c);
-    if (std::abs(k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c)) > Real(1e-3) * sigma_h_ * base) return -1;
-    return 2 * Atan2Lanes(s, c) + phase_.lower_pole();
+    if (!(t > 0) || !(p <= Real(1e-3) * quartic * Sqr(1 + t * t))) return -1;
+    return 2 * Atan2Lanes(t, Real(1)) + phase_.lower_pole();
   }
 
  private:
   PhaseProduct<Real> phase_;
-  Real depth_scale_;  // sigma_t h / cos(x_a / 2)
   Real sigma_h_, width_;
 };
 

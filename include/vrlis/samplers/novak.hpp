@@ -30,33 +30,7 @@ class PiecewiseLinearAngle {
   PiecewiseLinearAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
       : PiecewiseLinearAngle(Target(q, dom), dom.width()) {}
   // The fit of a target already built (by a caller that needed it for something else).
-  PiecewiseLinearAngle(const Target& target, Real width) : width_(width) {
-    std::array<Real, kNodes> node, value;
-    // Each side of a split gets at least one interval, the rest in proportion to its width.
-    std::array<Real, 2> splits;
-    int n = std::min(target.splits(splits), kNodes - 2);
-    Real start = 0;
-    int first = 0;
-    for (int k = 0; k <= n; ++k) {
-      Real end = k < n ? splits[k] / width_ : Real(1);
-      int last = k < n ? Clamp(static_cast<int>(std::lround(end * (kNodes - 1))), first + 1, kNodes - 1 - (n - k))
-                       : kNodes - 1;
-      PlaceWarped(node, first, start, end, last - first);
-      start = end;
-      first = last;
-    }
-    std::array<Real, kNodes> at;
-    for (int j = 0; j < kNodes; ++j) at[j] = node[j] * width_;
-    target.evaluate(at, value);
-    Real largest = *std::max_element(value.begin(), value.end());
-    if (largest > 0 && std::isfinite(largest))
-      for (Real& v : value) v = std::max(v / largest, Target::kRelativeFloor);
-    fit_ = PiecewiseLinear<Real, kNodes>(node, value);
-    if (!(fit_.integral() > 0) || !std::isfinite(fit_.integral())) {  // a target zero (or NaN) at every node
-      value.fill(1);
-      fit_ = PiecewiseLinear<Real, kNodes>(node, value);
-    }
-  }
+  PiecewiseLinearAngle(const Target& target, Real width) : width_(width), fit_(Fit(target, width)) {}
 
   Real sample(Real u) const { return fit_.sample(u) * width_; }
   // Offsets are in [0, width] up to the rounding of offset_at, hence the clamp.
@@ -75,6 +49,37 @@ class PiecewiseLinearAngle {
   }
 
  private:
+  // The fit in units of the width (built in place: a default-constructed member assigned
+  // afterwards cost a store-forwarding stall per fit).
+  static PiecewiseLinear<Real, kNodes> Fit(const Target& target, Real width) {
+    std::array<Real, kNodes> node, value;
+    // Each side of a split gets at least one interval, the rest in proportion to its width.
+    std::array<Real, 2> splits;
+    int n = std::min(target.splits(splits), kNodes - 2);
+    Real start = 0;
+    int first = 0;
+    for (int k = 0; k <= n; ++k) {
+      Real end = k < n ? splits[k] / width : Real(1);  // in (0, 1): rounds by adding a half
+      int last = k < n ? Clamp(static_cast<int>(end * (kNodes - 1) + Real(0.5)), first + 1, kNodes - 1 - (n - k))
+                       : kNodes - 1;
+      PlaceWarped(node, first, start, end, last - first);
+      start = end;
+      first = last;
+    }
+    std::array<Real, kNodes> at;
+    for (int j = 0; j < kNodes; ++j) at[j] = node[j] * width;
+    target.evaluate(at, value);
+    Real largest = *std::max_element(value.begin(), value.end());
+    if (largest > 0 && std::isfinite(largest))
+      for (Real& v : value) v = std::max(v / largest, Target::kRelativeFloor);
+    PiecewiseLinear<Real, kNodes> fit(node, value);
+    if (!(fit.integral() > 0) || !std::isfinite(fit.integral())) {  // a target zero (or NaN) at every node
+      value.fill(1);
+      fit = PiecewiseLinear<Real, kNodes>(node, value);
+    }
+    return fit;
+  }
+
   // start + (end - start) (1 - cos(pi j / count)) / 2 for j = 0..count, written from index first.
   static void PlaceWarped(std::array<Real, kNodes>& node, int first, Real start, Real end, int count) {
     for (int j = 0; j <= count; ++j) node[first + j] = start + (end - start) * WarpTable()[count][j];
