@@ -77,6 +77,7 @@ void RegisterPerSampler(const char* kind, Run run) {
 }
 
 void RegisterCamera();
+void RegisterCameraSeparate();
 void RegisterFit();
 void RegisterEstimator();
 void RegisterVrlPoint();

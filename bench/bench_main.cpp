@@ -1,6 +1,7 @@
 // vrlis_bench: the cost of one sample as a renderer pays it, with Google Benchmark.
 //
-//   Camera/<method>/g:<g>      build the sampler from a query (the fit), sample, pdf
+//   Camera/<method>/g:<g>      build the sampler from a query (the fit), then sample_pdf
+//   CameraSeparate/...         the same with sample, then pdf of the sample (unfused)
 //   Fit/<method>/g:<g>         the fit alone (where Camera's time goes)
 //   Estimator/<method>/g:<g>   the library's whole medium-to-medium gather without visibility
 //                              (SampleMediumGather): VrlPoint (fit, sample, pdf), the camera
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
   for (double g : kStudyG) PoolsFor(g);  // build every pool before timing anything
   RegisterVrlPoint();
   RegisterCamera();
+  RegisterCameraSeparate();
   RegisterFit();
   RegisterEstimator();
   RegisterGather();

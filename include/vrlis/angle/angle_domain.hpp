@@ -34,8 +34,7 @@ class AngleDomain {
     n_ = on_line_ ? AnyPerpendicular(q.dir) : (Real(1) / h_) * perp;
     h_ = std::max(h_, floor);
     tan_a_ = (tmin_ - u0_) / h_;
-    Real r = std::abs(tan_a_);  // cos(theta_a) = 1 / sqrt(1 + A^2), without overflowing A^2
-    cos_a_ = r > 1 ? 1 / (r * std::sqrt(1 + Sqr(1 / r))) : 1 / std::sqrt(1 + r * r);
+    stretch_ = h_ + (tmin_ - u0_) * tan_a_;  // h (1 + A^2), from two non-negative terms
     width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
                                   : Atan2Lanes(Real(1), tan_a_);
   }
@@ -67,7 +66,8 @@ class AngleDomain {
 
   // t_at(delta) and dtheta/dt there, from the sine and cosine t_at needs anyway: with
   // denom = cos(delta) - tan(theta_a) sin(delta) = cos(theta) / cos(theta_a),
-  // dtheta/dt = cos^2(theta) / h = (denom cos(theta_a))^2 / h. This equals dtheta_dt(t) of
+  // t = tmin + h (1 + A^2) sin(delta) / denom and
+  // dtheta/dt = cos^2(theta) / h = denom^2 / (h (1 + A^2)). This equals dtheta_dt(t) of
   // the rounded t to a few ulps (tan of the computed t's angle is (A c + s) / denom).
   AnglePoint<Real> point_at(Real delta) const {
     SinCosPair<Real> sc = SinCos(delta);
@@ -75,9 +75,9 @@ class AngleDomain {
     Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
     Real step = denom > 0 ? s / denom : std::numeric_limits<Real>::infinity();
     if (!(step > 0)) return {tmin_, dtheta_dt(tmin_)};  // h (1 + A^2) may overflow; never multiply it by 0
-    Real t = tmin_ + (h_ + (tmin_ - u0_) * tan_a_) * step;
+    Real t = tmin_ + stretch_ * step;
     if (!(t < LargestSample())) return {LargestSample(), dtheta_dt(LargestSample())};  // clamped: of the clamped t
-    return {std::max(t, tmin_), Sqr(denom * cos_a_) / h_};
+    return {std::max(t, tmin_), denom * denom / stretch_};
   }
 
   // dtheta / dt = h / (h^2 + (t - u0)^2).
@@ -92,7 +92,7 @@ class AngleDomain {
   // Samples must be finite even on an unbounded segment.
   Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
 
-  Real tmin_, tmax_, u0_, h_, tan_a_, cos_a_, width_;
+  Real tmin_, tmax_, u0_, h_, tan_a_, stretch_, width_;
   Vec3<Real> n_;
   bool on_line_;
 };

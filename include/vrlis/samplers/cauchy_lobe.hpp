@@ -28,9 +28,11 @@ template <typename Real>
 class TruncatedCauchy {
  public:
   TruncatedCauchy() = default;
-  // location: offset of the peak from theta_a (may lie outside the interval).
-  TruncatedCauchy(Real location, Real scale, Real width)
-      : location_(location), scale_(scale), width_(width), mass_(primitive(width)) {}
+  // location: offset of the peak from theta_a (may lie outside the interval); inv_scale:
+  // 1 / scale, passed in because a fit has it without a division of its own (pi times the
+  // lobe's peak value), which keeps one division off the fit's critical path.
+  TruncatedCauchy(Real location, Real scale, Real inv_scale, Real width)
+      : location_(location), scale_(scale), inv_scale_(inv_scale), width_(width), mass_(primitive(width)) {}
 
   // gamma / ((delta - mu)^2 + gamma^2): pi times the Cauchy density; integrates to mass().
   Real density(Real delta) const { return scale_ / (Sqr(delta - location_) + Sqr(scale_)); }
@@ -43,18 +45,19 @@ class TruncatedCauchy {
   Real inverse_primitive(Real s) const {
     using W = Widened<Real>;
     SinCosPair<W> e = WidenedSinCos(s);
-    W ratio = W(location_) / scale_, denom = e.cos + ratio * e.sin;
+    W ratio = W(location_) * inv_scale_, denom = e.cos + ratio * e.sin;
     return denom > 0 ? Clamp(Real((scale_ + location_ * ratio) * e.sin / denom), Real(0), width_) : width_;
   }
   Real mass() const { return mass_; }
   Real location() const { return location_; }
   Real scale() const { return scale_; }
+  Real inv_scale() const { return inv_scale_; }
   // Re z(delta) = gamma + mu (mu - delta) / gamma, in this factored form: expanded, its
   // two terms are ~1/gamma and cancel next to the peak (every digit for |g| -> 1).
-  Real Re(Real delta) const { return scale_ + location_ * ((location_ - delta) / scale_); }
+  Real Re(Real delta) const { return scale_ + location_ * ((location_ - delta) * inv_scale_); }
 
  private:
-  Real location_ = 0, scale_ = 1, width_ = 0, mass_ = 0;
+  Real location_ = 0, scale_ = 1, inv_scale_ = 1, width_ = 0, mass_ = 0;
 };
 
 // The thesis's fit (docs/maths.md#cauchy-fit): a Cauchy located at the lobe's peak whose peak value 1 / (pi gamma)
@@ -75,7 +78,7 @@ struct CauchyLobes {
   void Add(Real peak, Real peak_value, Real width, bool segment) {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
     // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
-    Real extent = width + std::abs(peak), scale = 1 / (kPi<Real> * peak_value);
+    Real extent = width + std::abs(peak), scale = 1 / (kPi<Real> * peak_value), inv_scale = kPi<Real> * peak_value;
     // Constant over the interval to the last digit, a flat lobe: so wide that it is over the
     // whole extent, or so far from the interval that its relative change there (at most
     // 2 width / distance) is below epsilon. The latter is no mere shortcut: there the
@@ -85,7 +88,8 @@ struct CauchyLobes {
     Real distance = peak < 0 ? -peak : std::max(peak - width, Real(0));
     if (!(extent >= scale * std::sqrt(eps)) || 2 * width < eps * distance) return;
     Real resolvable = 64 * eps * extent;
-    lobe[count] = TruncatedCauchy<Real>(peak, std::max(scale, resolvable), width);
+    bool widened = scale < resolvable;
+    lobe[count] = TruncatedCauchy<Real>(peak, widened ? resolvable : scale, widened ? 1 / resolvable : inv_scale, width);
     from_segment[count++] = segment;
   }
 };

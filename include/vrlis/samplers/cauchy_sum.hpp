@@ -73,7 +73,7 @@ class CauchySumAngle {
     SinCosPair<W> e = WidenedSinCos(c == width_ ? s - mass_ : s);
     W sn = e.sin, cs = e.cos;
     if (c > 0 && c < width_) {
-      W r1 = g1 - W(c1.location()) * e1 / g1, r2 = g2 - W(c2.location()) * e2 / g2;
+      W r1 = g1 - W(c1.location()) * e1 * W(c1.inv_scale()), r2 = g2 - W(c2.location()) * e2 * W(c2.inv_scale());
       W re = r1 * r2 - W(c) * W(c), im = W(c) * (r1 + r2);
       W rotated_cs = cs * re + sn * im;
       sn = sn * re - cs * im;
