@@ -14,7 +14,9 @@
 # VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base),
 # VRLIS_SPEED_BUILD (this tree's build dir; default build/, built here), VRLIS_SPEED_REPS (5),
 # VRLIS_SPEED_SCENES (bidirectional cube), VRLIS_SPEED_SAMPLERS (equiangular novak
-# cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (64: image side), VRLIS_SPEED_SPP (2).
+# cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (64: image side), VRLIS_SPEED_SPP (2),
+# VRLIS_SPEED_PIN (a CPU number: single-threaded runs are pinned to it with taskset; on a
+# shared machine whose cores are unequally loaded this keeps a run from migrating between them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/speed}
@@ -24,6 +26,8 @@ samplers=${VRLIS_SPEED_SAMPLERS:-equiangular novak cauchy-sum cauchy-mixture ful
 size=${VRLIS_SPEED_SIZE:-64}
 spp=${VRLIS_SPEED_SPP:-2}
 mkdir -p "$out/runs"
+pin=()
+[ -z "${VRLIS_SPEED_PIN:-}" ] || pin=(taskset -c "$VRLIS_SPEED_PIN")
 
 configure() {  # source dir, build dir
   cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_BUILD_TESTS=OFF -DVRLIS_BUILD_BENCH=ON \
@@ -49,7 +53,9 @@ for rep in $(seq "$reps"); do
         for build in base new; do
           dir=$([ "$build" = base ] && echo "$base" || echo "$new")
           stem="$out/runs/${scene}_${sampler}_${threads}_${build}_$rep"
-          "$dir/examples/vrl_render" --scene "$scene" --sampler "$sampler" --threads "$threads" --width "$size" \
+          run=("$dir/examples/vrl_render")
+          [ "$threads" != 1 ] || run=("${pin[@]}" "${run[@]}")
+          "${run[@]}" --scene "$scene" --sampler "$sampler" --threads "$threads" --width "$size" \
             --height "$size" --spp "$spp" --quiet --out "$stem" >/dev/null
         done
       done
@@ -59,7 +65,7 @@ for rep in $(seq "$reps"); do
 done
 
 echo "== vrlis_bench Gather/*, GatherPart/*, Fit/*: this tree only"
-"$new/bench/vrlis_bench" --benchmark_filter='^Gather|^Fit/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
+"${pin[@]}" "$new/bench/vrlis_bench" --benchmark_filter='^Gather|^Fit/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
   --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/runs/parts.json" --benchmark_out_format=json >/dev/null
 if command -v perf >/dev/null; then
@@ -74,7 +80,7 @@ echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
 for rep in $(seq "$reps"); do
   for build in base new; do
     dir=$([ "$build" = base ] && echo "$base" || echo "$new")
-    "$dir/bench/vrlis_bench" --benchmark_filter='^Camera/' --benchmark_min_time=0.05 \
+    "${pin[@]}" "$dir/bench/vrlis_bench" --benchmark_filter='^Camera(Separate)?/' --benchmark_min_time=0.05 \
       --benchmark_out="$out/runs/bench_${build}_$rep.json" --benchmark_out_format=json >/dev/null
   done
 done
@@ -122,6 +128,11 @@ for g in gs:
     row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
     ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
+print(f"\nWhat the fused call saves in this tree: fit + sample_pdf (Camera) over fit, sample, then pdf(t) (CameraSeparate), per sample\n")
+print("| g | " + " | ".join(cams) + " |")
+print("|---|" + "---|" * len(cams))
+for g in gs:
+    print(f"| {g:g} | " + " | ".join(f"{t('new', c, g) / times[('new', f'CameraSeparate/{c}/g:{g:.2f}')]:.2f}" for c in cams) + " |")
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
          if b.get("aggregate_name") == "median"}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
@@ -155,7 +166,7 @@ if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
     echo '## Speed against the baseline and the cost of one gather'
     echo
     echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`tools/speed.sh\`"
-    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds; load average"
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds;${VRLIS_SPEED_PIN:+ single-threaded runs pinned to CPU $VRLIS_SPEED_PIN;} load average"
     echo "at the end $(cut -d' ' -f1-3 /proc/loadavg): above the core count, the 2-thread columns measure the other load)."
     echo
     cat "$out/speed.md"; } >"$out/bench.md.new"

@@ -45,27 +45,34 @@ class PhaseProduct {
     theta_e_ = Atan2Lanes(b - A * a, a + A * b);
   }
 
-  // The product at every offset in `delta` (a fit's nodes). For two Henyey-Greenstein lobes
-  // the loop is branch-free, so compilers vectorise it: each lobe is K d^(-3/2) with
+  // The product at every offset in `delta` (a fit's nodes), in a branch-free loop that
+  // compilers vectorise. A Henyey-Greenstein lobe is K d^(-3/2) with
   // d = (1 - |g|)^2 + 2 |g| (1 - r) + 4 |g| r w^2, w the sine of its half angle from its peak
-  // (r = 1 for the segment lobe), a fixed combination of sin and cos of delta / 2.
+  // (r = 1 for the segment lobe), a fixed combination of sin and cos of delta / 2; a clamped
+  // cosine is r cos(delta - theta_e) / pi, from the same pair by the double-angle formulas.
   template <std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
-    if (kind_ != LobeKind::HenyeyGreenstein) {
-      for (std::size_t j = 0; j < N; ++j) out[j] = (*this)(delta[j]);
-      return;
-    }
     // (Computed here, not in the constructor: the Cauchy fits never need them. Inline
     // sines: two independent libm calls cost more than the polynomial, which overlaps.)
-    const LobeShape a = Shape(g_, 1, 0, SinCosLanes(lower_ / 2)),
-                    b = Shape(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
-    for (std::size_t j = 0; j < N; ++j) {
-      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
-      Real wa = half.sin * a.from_sin + half.cos * a.from_cos, wb = half.sin * b.from_sin + half.cos * b.from_cos;
-      Real da = a.base + a.slope * wa * wa, db = b.base + b.slope * wb * wb;
-      Real ra = RsqrtLanes(da), rb = RsqrtLanes(db);
-      out[j] = a.scale * (ra * ra * ra) * (b.scale * (rb * rb * rb));
+    switch (kind_) {
+      case LobeKind::HenyeyGreenstein: {
+        const LobeShape b = Shape(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
+        return EvaluateWithPointLobe(delta, out, [&](SinCosPair<Real> half) {
+          Real wb = half.sin * b.from_sin + half.cos * b.from_cos, rb = RsqrtLanes(b.base + b.slope * wb * wb);
+          return b.scale * (rb * rb * rb);
+        });
+      }
+      case LobeKind::ClampedCosine: {
+        const SinCosPair<Real> peak = SinCosLanes(theta_e_);
+        const Real scale = r_ * kInvPi<Real>;
+        return EvaluateWithPointLobe(delta, out, [&](SinCosPair<Real> half) {
+          Real cos = (half.cos - half.sin) * (half.cos + half.sin) * peak.cos + 2 * half.sin * half.cos * peak.sin;
+          return scale * SelectLanes(cos > 0, cos, Real(0));
+        });
+      }
+      case LobeKind::None: break;
     }
+    EvaluateWithPointLobe(delta, out, [](SinCosPair<Real>) { return Real(1); });
   }
 
   Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
@@ -135,6 +142,17 @@ class PhaseProduct {
   }
 
  private:
+  // evaluate()'s loop: the segment lobe times point_lobe(sin and cos of delta / 2).
+  template <std::size_t N, typename PointLobe>
+  void EvaluateWithPointLobe(const std::array<Real, N>& delta, std::array<Real, N>& out, PointLobe point_lobe) const {
+    const LobeShape a = Shape(g_, 1, 0, SinCosLanes(lower_ / 2));
+    for (std::size_t j = 0; j < N; ++j) {
+      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
+      Real wa = half.sin * a.from_sin + half.cos * a.from_cos, ra = RsqrtLanes(a.base + a.slope * wa * wa);
+      out[j] = a.scale * (ra * ra * ra) * point_lobe(half);
+    }
+  }
+
   // One Henyey-Greenstein lobe as evaluate() needs it (see there).
   struct LobeShape {
     Real from_sin = 0, from_cos = 0, base = 1, slope = 0, scale = kInvPi<Real> / 4;
