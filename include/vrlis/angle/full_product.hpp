@@ -75,33 +75,31 @@ class FullProductTarget {
 
   // With y = x/2 the segment lobe's half scattering angle and c = cos y, the log-derivative
   // of lobe x transmittance in x vanishes where 12 |g| sin(y) c^3 = sigma_t h D(c), D the
-  // lobe's denominator (1 + g)^2 + 4 |g| c^2 (g < 0). Divided by c^4 and written in
-  // t = tan y (w = 1 + t^2 = 1 / c^2) it is the root of a quartic with no square roots,
-  //   P(t) = sigma_t h ((1 + g)^2 w^2 + 4 |g| w) - 12 |g| t,
-  // negative where the product rises along x. P is convex, so its maximum is P's larger
-  // root, and Newton from the right of it descends to it monotonically. A start there: where
-  // the quartic term alone, or the quadratic one alone, outweighs 12 |g| t, i.e. the smaller
-  // of t^3 = 12 |g| / (sigma_t h (1 + g)^2) and t = 3 / (sigma_t h); at either P > 0 and
-  // P' >= 12 |g| > 0. Returns the peak's offset, or -1 when the product has no interior
-  // peak (P positive throughout: the iteration meets P' <= 0 or stalls).
+  // lobe's denominator (1 + g)^2 + 4 |g| c^2 (g < 0). Along x the product rises where the
+  // left side is larger; its maximum is the smaller positive root in c. Newton from the
+  // root of the leading terms, 12 |g| c^3 = sigma_t h (1 + g)^2, which lies below it, until
+  // a step is below 1e-4 c (Newton converges quadratically here: the next step would be
+  // below float's rounding). Returns the peak's offset, or -1 when the product has no
+  // interior peak.
   Real SegmentTransmittancePeak() const {
     Real g = phase_.segment_g();
     if (!(g < 0) || !(sigma_h_ > 0)) return -1;
-    Real a = -g, k = 12 * a, quartic = sigma_h_ * Sqr(1 + g), quadratic = 4 * a * sigma_h_;
-    Real t = std::min(std::cbrt(k / quartic), 3 / sigma_h_);
-    if (!std::isfinite(t)) return -1;
-    Real p = 0;
-    for (int i = 0; i < 8; ++i) {
-      Real w = 1 + t * t;
-      p = (quartic * w + quadratic) * w - k * t;
-      Real dp = (4 * quartic * w + 2 * quadratic) * t - k;
-      if (!(dp > 0)) return -1;  // left of P's minimum: no root to its right
-      Real step = p / dp;
-      t -= step;
-      if (step <= Real(1e-4) * t) break;  // the next step would be below float rounding
+    Real a = -g, k = 12 * a, base = Sqr(1 + g);
+    Real c = std::cbrt(sigma_h_ * base / k);
+    for (int i = 0; i < 8 && c < 1; ++i) {
+      // f and s f' (s = sin y > 0: the same sign, and no division by s).
+      Real s = std::sqrt(1 - c * c);
+      Real f = k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c);
+      Real s_df = k * c * c * (3 - 4 * c * c) - 8 * a * sigma_h_ * c * s;
+      if (!(s_df > 0)) return -1;  // past the maximum of the left side: no crossing from below
+      Real step = s * f / s_df;
+      c -= step;
+      if (std::abs(step) <= Real(1e-4) * c) break;
     }
-    if (!(t > 0) || !(p <= Real(1e-3) * quartic * Sqr(1 + t * t))) return -1;
-    return 2 * Atan2Lanes(t, Real(1)) + phase_.lower_pole();
+    if (!(c > 0 && c < 1)) return -1;
+    Real s = std::sqrt(1 - c * c);
+    if (std::abs(k * s * c * c * c - sigma_h_ * (base + 4 * a * c * c)) > Real(1e-3) * sigma_h_ * base) return -1;
+    return 2 * Atan2Lanes(s, c) + phase_.lower_pole();
   }
 
  private:
