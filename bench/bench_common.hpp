@@ -78,6 +78,8 @@ void RegisterPerSampler(const char* kind, Run run) {
 
 void RegisterCamera();
 void RegisterCameraSeparate();
+// SceneCamera/<method> over the queries of a log file; false (and *error) if it cannot be read.
+bool RegisterSceneCamera(const std::string& path, std::string* error);
 void RegisterFit();
 void RegisterEstimator();
 void RegisterVrlPoint();

@@ -2,6 +2,8 @@
 //
 //   Camera/<method>/g:<g>      build the sampler from a query (the fit), then sample_pdf
 //   CameraSeparate/...         the same with sample, then pdf of the sample (unfused)
+//   SceneCamera/<method>       Camera/ on a render's own queries: only with
+//                              --vrlis_queries=FILE (a log of vrl_render --dump-queries)
 //   Fit/<method>/g:<g>         the fit alone (where Camera's time goes)
 //   Estimator/<method>/g:<g>   the library's whole medium-to-medium gather without visibility
 //                              (SampleMediumGather): VrlPoint (fit, sample, pdf), the camera
@@ -18,6 +20,7 @@
 // Standard flags apply: --benchmark_filter=Novak, --benchmark_format=json, ...
 #include <map>
 #include <memory>
+#include <string>
 
 #include "bench_common.hpp"
 
@@ -42,6 +45,16 @@ const Pools& PoolsFor(double g) {
 
 int main(int argc, char** argv) {
   using namespace vrlis::bench;
+  // Our one flag, taken out before Google Benchmark reads the rest.
+  std::string queries;
+  const std::string flag = "--vrlis_queries=";
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.rfind(flag, 0) == 0) queries = arg.substr(flag.size());
+    else argv[kept++] = argv[i];
+  }
+  argc = kept;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::AddCustomContext("vrlis_pool", std::to_string(kPool));
@@ -56,6 +69,13 @@ int main(int argc, char** argv) {
   RegisterVrlPoint();
   RegisterCamera();
   RegisterCameraSeparate();
+  if (!queries.empty()) {
+    std::string error;
+    if (!RegisterSceneCamera(queries, &error)) {
+      std::fprintf(stderr, "vrlis_bench: %s\n", error.c_str());
+      return 2;
+    }
+  }
   RegisterFit();
   RegisterEstimator();
   RegisterGather();

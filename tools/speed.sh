@@ -9,7 +9,8 @@
 # - vrl_render VRL gathers per second, per scene x sampler x build, on 1 and 2 threads, and
 #   the 2-thread speedup;
 # - vrlis_bench's camera step per sample (fit + sample + pdf: this tree fuses the last two in sample_pdf, the baseline of 146a16a calls sample then pdf), per sampler x g x build, and
-#   the ratios CauchySum / Novak and CauchyMixture / Novak.
+#   the ratios CauchySum / Novak and CauchyMixture / Novak;
+# - this tree's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries).
 # Environment: VRLIS_SPEED_BASE (a configured baseline build dir; default: commit
 # VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base),
 # VRLIS_SPEED_BUILD (this tree's build dir; default build/, built here), VRLIS_SPEED_REPS (5),
@@ -76,6 +77,15 @@ if command -v perf >/dev/null; then
     sed -E 's/[ -]+$//' | head -15 >"$out/runs/perf.txt" || true
 fi
 
+echo "== vrlis_bench SceneCamera/*: the camera step on each scene's own queries (this tree)"
+for scene in $scenes; do
+  "$new/examples/vrl_render" --scene "$scene" --sampler novak --threads 1 --width "$size" --height "$size" --spp "$spp" \
+    --quiet --dump-queries "$out/runs/$scene.qlog" --dump-every 20 --out "$out/runs/${scene}_queries" >/dev/null
+  "${pin[@]}" "$new/bench/vrlis_bench" --vrlis_queries="$out/runs/$scene.qlog" --benchmark_filter='^SceneCamera/' \
+    --benchmark_min_time=0.1 --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+    --benchmark_out="$out/runs/scene_$scene.json" --benchmark_out_format=json >/dev/null
+done
+
 echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
 for rep in $(seq "$reps"); do
   for build in base new; do
@@ -133,6 +143,16 @@ print("| g | " + " | ".join(cams) + " |")
 print("|---|" + "---|" * len(cams))
 for g in gs:
     print(f"| {g:g} | " + " | ".join(f"{t('new', c, g) / times[('new', f'CameraSeparate/{c}/g:{g:.2f}')]:.2f}" for c in cams) + " |")
+print(f"\nCamera step per sample on the scenes' own queries, ns (fit + sample_pdf, float; vrlis_bench SceneCamera/ over "
+      f"a log of the scene's medium-to-medium gathers, vrl_render --dump-queries; median of {reps} repetitions), and over Novak\n")
+scene_methods = ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]
+print("| scene | " + " | ".join(scene_methods) + " | CSum/Novak | CMix/Novak |")
+print("|---|" + "---|" * (len(scene_methods) + 2))
+for scene in scenes:
+    st = {b["name"].split("/")[1].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/scene_{scene}.json"))["benchmarks"]
+          if b.get("aggregate_name") == "median"}
+    print(f"| {scene} | " + " | ".join(f"{st[m]:.0f}" for m in scene_methods) +
+          f" | {st['cauchy-sum'] / st['novak']:.2f} | {st['cauchy-mixture'] / st['novak']:.2f} |")
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
          if b.get("aggregate_name") == "median"}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
