@@ -10,9 +10,15 @@ namespace vrlis {
 
 // Written in terms of 1 - cos and 1 + cos so that the denominator 1 + g^2 - 2 g cos does
 // not cancel near either peak when |g| -> 1 (docs/maths.md#numerics).
+// The phase function is (1 - g)(1 + g) / (4 pi d^(3/2)) with d = 1 + g^2 - 2 g cos, this.
+template <typename Real>
+Real HenyeyGreensteinBase(Real g, Real one_minus_cos, Real one_plus_cos) {
+  return g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;
+}
+
 template <typename Real>
 Real HenyeyGreenstein(Real g, Real one_minus_cos, Real one_plus_cos) {
-  Real denom = g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;
+  Real denom = HenyeyGreensteinBase(g, one_minus_cos, one_plus_cos);
   return (1 - g) * (1 + g) / (4 * kPi<Real> * denom * std::sqrt(denom));
 }
 
@@ -29,8 +35,7 @@ Real HenyeyGreensteinPeak(Real g) {
 // The cumulative distribution of cos, P(cos' <= cos); exact in the limit g -> 0.
 template <typename Real>
 Real InvertHenyeyGreenstein(Real g, Real cos) {
-  Real denom = g >= 0 ? Sqr(1 - g) + 2 * g * (1 - cos) : Sqr(1 + g) - 2 * g * (1 + cos);
-  Real s = std::sqrt(denom);
+  Real s = std::sqrt(HenyeyGreensteinBase(g, 1 - cos, 1 + cos));
   return Clamp((1 - g) * (1 + cos) / (s * (1 + g + s)), Real(0), Real(1));
 }
 

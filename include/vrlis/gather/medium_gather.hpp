@@ -19,20 +19,25 @@ SegmentQuery<Real> CameraStepQuery(const MediumGatherQuery<Real>& q, Vec3<Real> 
                              q.medium.sigma_t);
 }
 
-// The integrand at (t, v) without visibility, and its connection transmittance.
+// The integrand at (t, v) without visibility, and its connection transmittance. Both
+// phase lobes share one square root and one division (their numerators are the medium's).
+// (The exponentials stay libm's: glibc picks an FMA build of expf at run time, faster than
+// ExpLanes compiled for the baseline instruction set: measured -8% gathers/s with it.)
 template <typename Real>
 Real MediumGatherIntegrand(const MediumGatherQuery<Real>& q, Real t, Real v, Real* transmittance = nullptr) {
   Vec3<Real> x = q.camera.at(t), y = q.vrl.at(v), w = y - x;
   Real r2 = Dot(w, w);
   if (!(r2 > 0)) return 0;
-  Real r = std::sqrt(r2);
-  Vec3<Real> wh = (Real(1) / r) * w;
   const Medium<Real>& m = q.medium;
+  Real r = std::sqrt(r2), inv_r = 1 / r;
+  Real cos_camera = Clamp(Dot(q.camera.dir, w) * inv_r, Real(-1), Real(1));
+  Real cos_vrl = Clamp(-Dot(q.vrl.dir, w) * inv_r, Real(-1), Real(1));
+  Real d = HenyeyGreensteinBase(m.g, 1 - cos_camera, 1 + cos_camera) * HenyeyGreensteinBase(m.g, 1 - cos_vrl, 1 + cos_vrl);
+  Real lobe_numerator = m.sigma_s * (1 - m.g) * (1 + m.g) / (4 * kPi<Real>);
   Real connection = std::exp(-m.sigma_t * r);
   if (transmittance) *transmittance = connection;
-  return m.sigma_s * m.sigma_s * HenyeyGreenstein(m.g, Clamp(Dot(q.camera.dir, wh), Real(-1), Real(1))) *
-         HenyeyGreenstein(m.g, Clamp(-Dot(q.vrl.dir, wh), Real(-1), Real(1))) *
-         std::exp(-m.sigma_t * ((t - q.camera.tmin) + v)) * connection / r2;
+  return Sqr(lobe_numerator) * (std::exp(-m.sigma_t * ((t - q.camera.tmin) + v)) * connection) / (d * std::sqrt(d)) *
+         inv_r * inv_r;
 }
 
 // Calls f(Type<StepOneSampler>{}, Type<CameraSampler>{}) for the samplers of `method`:
