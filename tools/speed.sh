@@ -13,11 +13,15 @@
 # - this tree's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries).
 # Environment: VRLIS_SPEED_BASE (a configured baseline build dir; default: commit
 # VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base),
-# VRLIS_SPEED_BUILD (this tree's build dir; default build/, built here), VRLIS_SPEED_REPS (5),
+# VRLIS_SPEED_BUILD (this tree's build dir; default build/, or <outdir>/new with
+# VRLIS_SPEED_CXXFLAGS, built here), VRLIS_SPEED_REPS (5),
 # VRLIS_SPEED_SCENES (bidirectional cube), VRLIS_SPEED_SAMPLERS (equiangular novak
 # cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (64: image side), VRLIS_SPEED_SPP (2),
 # VRLIS_SPEED_PIN (a CPU number: single-threaded runs are pinned to it with taskset; on a
-# shared machine whose cores are unequally loaded this keeps a run from migrating between them).
+# shared machine whose cores are unequally loaded this keeps a run from migrating between them),
+# VRLIS_SPEED_CXXFLAGS (compiler flags for both builds, e.g. -march=x86-64-v3: the same for
+# both, so that the ratios compare code, not flags; the results then go to
+# docs/speed-<flags>.md, and docs/bench.md keeps the default build's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/speed}
@@ -32,10 +36,11 @@ pin=()
 
 configure() {  # source dir, build dir
   cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_BUILD_TESTS=OFF -DVRLIS_BUILD_BENCH=ON \
-    -DVRLIS_BUILD_EXAMPLES=ON >/dev/null
+    -DVRLIS_BUILD_EXAMPLES=ON "-DCMAKE_CXX_FLAGS=${VRLIS_SPEED_CXXFLAGS:-}" >/dev/null
   cmake --build "$2" --target vrl_render vrlis_bench -j"$(nproc)" >/dev/null
 }
 new=${VRLIS_SPEED_BUILD:-build}
+[ -n "${VRLIS_SPEED_BUILD:-}" ] || [ -z "${VRLIS_SPEED_CXXFLAGS:-}" ] || new="$out/new"  # never reconfigure build/ with other flags
 [ -n "${VRLIS_SPEED_BUILD:-}" ] || configure . "$new"
 base=${VRLIS_SPEED_BASE:-}
 if [ -z "$base" ]; then
@@ -178,17 +183,32 @@ for c in ("CauchySum", "CauchyMixture"):
           f"new {geo([t('new', c, g) / t('new', 'Novak', g) for g in gs]):.2f}")
 EOF
 
-# The generated section of docs/bench.md (tools/bench.sh keeps it when it rewrites the rest).
+# The generated section of docs/bench.md (tools/bench.sh keeps it when it rewrites the rest),
+# or with VRLIS_SPEED_CXXFLAGS a page of its own.
 if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
   model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
-  { sed '/^<!-- speed -->$/,$d' docs/bench.md
-    echo '<!-- speed -->'
-    echo '## Speed against the baseline and the cost of one gather'
-    echo
-    echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`tools/speed.sh\`"
-    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; $reps interleaved rounds;${VRLIS_SPEED_PIN:+ single-threaded runs pinned to CPU $VRLIS_SPEED_PIN;} load average"
+  header() {
+    echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`${VRLIS_SPEED_CXXFLAGS:+VRLIS_SPEED_CXXFLAGS=\"$VRLIS_SPEED_CXXFLAGS\" }tools/speed.sh\`"
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; both builds ${VRLIS_SPEED_CXXFLAGS:+with $VRLIS_SPEED_CXXFLAGS, }Release;"
+    echo "$reps interleaved rounds;${VRLIS_SPEED_PIN:+ single-threaded runs pinned to CPU $VRLIS_SPEED_PIN;} load average"
     echo "at the end $(cut -d' ' -f1-3 /proc/loadavg): above the core count, the 2-thread columns measure the other load)."
     echo
-    cat "$out/speed.md"; } >"$out/bench.md.new"
-  mv "$out/bench.md.new" docs/bench.md
+  }
+  if [ -n "${VRLIS_SPEED_CXXFLAGS:-}" ]; then
+    page="docs/speed-$(echo "$VRLIS_SPEED_CXXFLAGS" | tr -c 'A-Za-z0-9.\n-' '_' | sed 's/^-*//').md"
+    { echo "# Speed against the baseline, both built with \`$VRLIS_SPEED_CXXFLAGS\`"
+      echo
+      echo "The same measurements as [the default build's](bench.md#speed-against-the-baseline-and-the-cost-of-one-gather)."
+      echo
+      header
+      cat "$out/speed.md"; } >"$page"
+  else
+    { sed '/^<!-- speed -->$/,$d' docs/bench.md
+      echo '<!-- speed -->'
+      echo '## Speed against the baseline and the cost of one gather'
+      echo
+      header
+      cat "$out/speed.md"; } >"$out/bench.md.new"
+    mv "$out/bench.md.new" docs/bench.md
+  fi
 fi
