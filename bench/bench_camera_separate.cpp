@@ -3,24 +3,14 @@
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
-namespace {
 
-template <typename Sampler>
-void CameraSeparate(benchmark::State& state, double g) {
-  const Pools& pools = PoolsFor(g);
-  OverPool(state, [&](size_t i) {
-    Sampler s(pools.camera[i]);
+void RegisterCameraSeparate() {
+  RegisterOverPools("CameraSeparate", [](auto tag, const Pools& pools, size_t i) {
+    typename decltype(tag)::type s(pools.camera[i]);
     float t = s.sample(pools.configs[i].xi_cam);
     SegmentSample<float> sample{t, s.pdf(t)};
     benchmark::DoNotOptimize(sample);
   });
-}
-
-}  // namespace
-
-void RegisterCameraSeparate() {
-  RegisterPerSampler("CameraSeparate",
-                     [](auto tag, benchmark::State& s, double g) { CameraSeparate<typename decltype(tag)::type>(s, g); });
 }
 
 }  // namespace vrlis::bench

@@ -76,6 +76,16 @@ void RegisterPerSampler(const char* kind, Run run) {
   RegisterPerSampler(kind, run, static_cast<CameraSamplers*>(nullptr));
 }
 
+// RegisterPerSampler with the timed loop over the pool of g: kind/<method>/g:<g> runs
+// body(tag, pools, i), decltype(tag)::type the sampler, for i cycling through the pool.
+template <typename Body>
+void RegisterOverPools(const char* kind, Body body) {
+  RegisterPerSampler(kind, [body](auto tag, benchmark::State& state, double g) {
+    const Pools& pools = PoolsFor(g);
+    OverPool(state, [&](size_t i) { body(tag, pools, i); });
+  });
+}
+
 void RegisterCamera();
 void RegisterCameraSeparate();
 // SceneCamera/<method> over the queries of a log file; false (and *error) if it cannot be read.

@@ -2,21 +2,12 @@
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
-namespace {
-
-template <typename Sampler>
-void Fit(benchmark::State& state, double g) {
-  const Pools& pools = PoolsFor(g);
-  OverPool(state, [&](size_t i) {
-    Sampler s(pools.camera[i]);
-    benchmark::DoNotOptimize(s);
-  });
-}
-
-}  // namespace
 
 void RegisterFit() {
-  RegisterPerSampler("Fit", [](auto tag, benchmark::State& s, double g) { Fit<typename decltype(tag)::type>(s, g); });
+  RegisterOverPools("Fit", [](auto tag, const Pools& pools, size_t i) {
+    typename decltype(tag)::type s(pools.camera[i]);
+    benchmark::DoNotOptimize(s);
+  });
 }
 
 }  // namespace vrlis::bench

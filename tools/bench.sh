@@ -10,7 +10,9 @@
 #   tools/bench.sh [outdir=out/bench]
 # Environment: VRLIS_BENCH_BUILD (a configured build dir; default: the `release` preset's,
 # build/), VRLIS_BENCH_REPS (5),
-# VRLIS_BENCH_MIN_TIME (0.1 s per repetition), VRLIS_ACCURACY_PAIRS (256).
+# VRLIS_BENCH_MIN_TIME (0.1 s per repetition), VRLIS_ACCURACY_PAIRS (256), VRLIS_BENCH_PIN (a CPU
+# number: vrlis_bench runs pinned to it with taskset, for a shared machine whose cores are
+# unequally loaded).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/bench}
@@ -27,7 +29,9 @@ fi
 mkdir -p "$out"
 
 echo "== vrlis_bench ($reps repetitions, interleaved; medians)"
-"$build/bench/vrlis_bench" --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+pin=()
+[ -z "${VRLIS_BENCH_PIN:-}" ] || pin=(taskset -c "$VRLIS_BENCH_PIN")
+"${pin[@]}" "$build/bench/vrlis_bench" --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
   --benchmark_enable_random_interleaving=true --benchmark_min_time="$min_time" \
   --benchmark_out="$out/bench.json" --benchmark_out_format=json
 

@@ -118,9 +118,9 @@ enum class AutoModel { Equiangular, Novak, FullProduct };
 struct AutoRule {
   // Cost of one whole medium-to-medium gather estimate (step one, step two, integrand) with
   // each camera sampler, relative to equiangular: the geometric mean over g of vrlis_bench's
-  // Estimator/<sampler> times of `tools/bench.sh` when the rule was set (220, 422 and 577 ns;
-  // later runs of docs/bench.md move by about 10 %, which moves few decisions).
-  static constexpr double kCost[] = {1.0, 1.92, 2.63};
+  // Estimator/<sampler> times of `tools/bench.sh` when the rule was last set (216, 373 and
+  // 438 ns; runs of docs/bench.md move by about 10 %, which moves few decisions).
+  static constexpr double kCost[] = {1.0, 1.72, 2.02};
   // The relative variance a piecewise-linear fit leaves on the part of the target it models:
   // FullProduct's camera-step median relative variance is at most 0.07 at every g of the
   // synthetic map (docs/bench.md); Novák's fit of the phases alone is as close.
