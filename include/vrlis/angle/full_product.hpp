@@ -78,9 +78,9 @@ class FullProductTarget {
   // lobe's denominator (1 + g)^2 + 4 |g| c^2 (g < 0). Along x the product rises where the
   // left side is larger; its maximum is the smaller positive root in c. Newton from the
   // root of the leading terms, 12 |g| c^3 = sigma_t h (1 + g)^2, which lies below it, until
-  // a step is below 1e-4 c (Newton converges quadratically here: the next step would be
-  // below float's rounding). Returns the peak's offset, or -1 when the product has no
-  // interior peak.
+  // a step is below 1e-4 c (the convergence is quadratic: the error left is ~1e-8 c, far
+  // finer than a node's position needs). Returns the peak's offset, or -1 when the product
+  // has no interior peak.
   Real SegmentTransmittancePeak() const {
     Real g = phase_.segment_g();
     if (!(g < 0) || !(sigma_h_ > 0)) return -1;

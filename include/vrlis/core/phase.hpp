@@ -8,9 +8,9 @@
 
 namespace vrlis {
 
-// Written in terms of 1 - cos and 1 + cos so that the denominator 1 + g^2 - 2 g cos does
-// not cancel near either peak when |g| -> 1 (docs/maths.md#numerics).
-// The phase function is (1 - g)(1 + g) / (4 pi d^(3/2)) with d = 1 + g^2 - 2 g cos, this.
+// d = 1 + g^2 - 2 g cos, written in terms of 1 - cos and 1 + cos so that it does not cancel
+// near either peak when |g| -> 1 (docs/maths.md#numerics). The phase function is
+// (1 - g)(1 + g) / (4 pi d^(3/2)).
 template <typename Real>
 Real HenyeyGreensteinBase(Real g, Real one_minus_cos, Real one_plus_cos) {
   return g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;
