@@ -25,15 +25,16 @@ class FullProductTarget {
   static constexpr Real kRelativeFloor = Real(1e-3);
 
   FullProductTarget(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
-      : phase_(q, dom), sigma_h_(q.sigma_t * dom.h()), width_(dom.width()) {}
+      : phase_(q, dom),
+        pole_(SinCosLanes(phase_.lower_pole() / 2)),  // pole_.cos = cos(x_a / 2)
+        sigma_h_(q.sigma_t * dom.h()),
+        depth_scale_(sigma_h_ / pole_.cos),
+        width_(dom.width()) {}
 
   Real operator()(Real delta) const {
     Real half = phase_.segment_half_angle(delta), sin_half = std::sin(half), cos_half = std::cos(half);
     Real value = phase_.segment_lobe(sin_half, cos_half) * phase_.point_lobe(delta);
-    if (sigma_h_ > 0) {
-      Real cos_half_a = std::cos(phase_.segment_half_angle(0));
-      value *= std::exp(-sigma_h_ * std::sin(delta / 2) / (cos_half_a * std::max(cos_half, Real(0))));
-    }
+    if (depth_scale_ > 0) value *= std::exp(-depth_scale_ * std::sin(delta / 2) / std::max(cos_half, Real(0)));
     return value;
   }
   // The value at every offset in `delta` (a fit's nodes): the phase product's branch-free
@@ -43,14 +44,11 @@ class FullProductTarget {
   template <std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
     phase_.evaluate(delta, out);
-    if (!(sigma_h_ > 0)) return;
-    // pole.cos = cos(x_a / 2): the optical depth's constant factor comes with it.
-    const SinCosPair<Real> pole = SinCosLanes(phase_.lower_pole() / 2);
-    const Real depth_scale = sigma_h_ / pole.cos;
+    if (!(depth_scale_ > 0)) return;
     for (std::size_t j = 0; j < N; ++j) {
       SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
-      Real cos_half = half.cos * pole.cos + half.sin * pole.sin;
-      out[j] *= ExpLanes(-depth_scale * half.sin / std::max(cos_half, Real(0)));
+      Real cos_half = half.cos * pole_.cos + half.sin * pole_.sin;
+      out[j] *= ExpLanes(-depth_scale_ * half.sin / std::max(cos_half, Real(0)));
     }
   }
 
@@ -104,7 +102,10 @@ class FullProductTarget {
 
  private:
   PhaseProduct<Real> phase_;
-  Real sigma_h_, width_;
+  SinCosPair<Real> pole_;  // of half the lower pole's offset, -x_a / 2
+  Real sigma_h_;
+  Real depth_scale_;  // sigma_t h / cos(x_a / 2)
+  Real width_;
 };
 
 }  // namespace vrlis

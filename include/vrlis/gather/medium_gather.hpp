@@ -33,7 +33,7 @@ Real MediumGatherIntegrand(const MediumGatherQuery<Real>& q, Real t, Real v, Rea
   Real cos_camera = Clamp(Dot(q.camera.dir, w) * inv_r, Real(-1), Real(1));
   Real cos_vrl = Clamp(-Dot(q.vrl.dir, w) * inv_r, Real(-1), Real(1));
   Real d = HenyeyGreensteinBase(m.g, 1 - cos_camera, 1 + cos_camera) * HenyeyGreensteinBase(m.g, 1 - cos_vrl, 1 + cos_vrl);
-  Real lobe_numerator = m.sigma_s * (1 - m.g) * (1 + m.g) / (4 * kPi<Real>);
+  Real lobe_numerator = m.sigma_s * (1 - m.g) * (1 + m.g) * (kInvPi<Real> / 4);
   Real connection = std::exp(-m.sigma_t * r);
   if (transmittance) *transmittance = connection;
   return Sqr(lobe_numerator) * (std::exp(-m.sigma_t * ((t - q.camera.tmin) + v)) * connection) / (d * std::sqrt(d)) *
