@@ -48,6 +48,18 @@ double FloatUlps(float got, double exact) {
 }
 }  // namespace
 
+TEST_CASE("CbrtLanes<float> is within 2.5e-5 relative over the normal floats", "[lib][lane_math]") {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> mantissa(1.0f, 2.0f);
+  double worst = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    float x = std::ldexp(mantissa(rng), i % 250 - 125);
+    double exact = std::cbrt(double(x));
+    worst = std::max(worst, std::abs(vrlis::CbrtLanes(x) - exact) / exact);
+  }
+  CHECK(worst <= 2.5e-5);
+}
+
 TEST_CASE("Log1pLanes<float> is within 1 ulp from -1 to float's largest, and keeps its special values",
           "[lib][lane_math]") {
   std::mt19937 rng(13);

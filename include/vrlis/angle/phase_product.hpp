@@ -115,14 +115,16 @@ class PhaseProduct {
   }
 
   // Where each lobe peaks, as an offset. The segment lobe peaks at a pole, on or beyond an
-  // endpoint; of the point lobe's peaks modulo 2 pi, the one nearest the interval.
+  // endpoint; of the point lobe's peaks modulo 2 pi, the one nearest the interval. That is
+  // the one nearest its midpoint (the images are 2 pi apart, the interval at most pi wide),
+  // base - 2 pi k with k the integer nearest (base - width / 2) / (2 pi): base lies in
+  // [-pi, 2 pi], so k is -1, 0 or 1, found by two comparisons (not branches: the side is
+  // random across queries).
   Real segment_peak() const { return g_ > 0 ? lower_ : upper_; }
   Real point_peak() const {
-    Real base = theta_e_ + (point_g() < 0 ? kPi<Real> : Real(0));
-    Real best = base;
-    for (Real image : {base - 2 * kPi<Real>, base + 2 * kPi<Real>})
-      if (DistanceToInterval(image) < DistanceToInterval(best)) best = image;
-    return best;
+    Real base = theta_e_ + (point_g() < 0 ? kPi<Real> : Real(0)), from_middle = base - width_ / 2;
+    Real k = Real(from_middle > kPi<Real>) - Real(from_middle < -kPi<Real>);
+    return base - 2 * kPi<Real> * k;
   }
   // Where a piecewise-linear fit must have a node, in increasing order: the point lobe's
   // peak when it lies inside the interval (Novák's split). Returns how many.
@@ -174,8 +176,6 @@ class PhaseProduct {
     s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
     return s;
   }
-
-  Real DistanceToInterval(Real x) const { return x < 0 ? -x : std::max(x - width_, Real(0)); }
 
   Real g_, g_point_;
   LobeKind kind_;
