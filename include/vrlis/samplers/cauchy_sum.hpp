@@ -7,6 +7,7 @@
 // quadratic's slope is +sqrt(disc).
 #include <algorithm>
 #include <string_view>
+#include <type_traits>
 
 #include "../angle/segment_sampler.hpp"
 #include "cauchy_lobe.hpp"
@@ -82,10 +83,16 @@ class CauchySumAngle {
     W a = (g2 * e1 + g1 * e2) * cs - (e1 * e2 - g1 * g2) * sn;
     W b = (g2 * p1 + g1 * p2) * cs - (p1 * e2 + p2 * e1) * sn;
     W c0 = -p1 * p2 * sn;
-    W inv_norm = 1 / std::max({std::abs(a), std::abs(b), std::abs(c0)});  // keep b^2 - 4ac finite
-    a *= inv_norm;
-    b *= inv_norm;
-    c0 *= inv_norm;
+    // Keep b^2 - 4 a c0 finite and normal. A float query solved in double needs no scaling:
+    // its scales lie between 64 eps width (width >= the smallest normal float) and
+    // extent / sqrt(eps) (CauchyLobes), its offsets below 4 pi, so every p_k lies in
+    // [1e-86, 2e9] and the discriminant's terms (~p^3) in [1e-259, 1e30]; in double they need it.
+    if constexpr (std::is_same_v<W, Real>) {
+      W inv_norm = 1 / std::max({std::abs(a), std::abs(b), std::abs(c0)});
+      a *= inv_norm;
+      b *= inv_norm;
+      c0 *= inv_norm;
+    }
     W root = SafeSqrt(b * b - 4 * a * c0);
     // The root where the argument crosses K increasing, (-b + root) / (2a), in whichever
     // form does not cancel (selected, not branched: the sign of b is random across queries).
