@@ -34,8 +34,10 @@ mkdir -p "$out/runs"
 pin=()
 [ -z "${VRLIS_SPEED_PIN:-}" ] || pin=(taskset -c "$VRLIS_SPEED_PIN")
 
-configure() {  # source dir, build dir
-  cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_BUILD_TESTS=OFF -DVRLIS_BUILD_BENCH=ON \
+configure() {  # source dir, build dir (build/ keeps its tests: it is the developer's tree)
+  local tests=OFF
+  [ "$2" != build ] || tests=$(sed -n 's/^VRLIS_BUILD_TESTS:BOOL=//p' build/CMakeCache.txt 2>/dev/null || true)
+  cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release "-DVRLIS_BUILD_TESTS=${tests:-ON}" -DVRLIS_BUILD_BENCH=ON \
     -DVRLIS_BUILD_EXAMPLES=ON "-DCMAKE_CXX_FLAGS=${VRLIS_SPEED_CXXFLAGS:-}" >/dev/null
   cmake --build "$2" --target vrl_render vrlis_bench -j"$(nproc)" >/dev/null
 }

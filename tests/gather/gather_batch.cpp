@@ -1,10 +1,19 @@
 // Hypothesis: the batched medium gather is the one-VRL gather. For every step one x step two,
 // SampleMediumGathers over a camera segment and n VRLs (n from 1 to past two batches of
-// vector lanes) returns, VRL by VRL, the GatherSample of SampleMediumGather with the same
-// random numbers, to rounding. The VRLs are random and include the cases step one treats apart:
-// v0 before, inside and after the VRL, near-parallel lines, a VRL crossing the camera line,
-// tiny and long VRLs. A batch that mixed up lanes, or a vectorised fit that rounded
-// differently from the scalar one, fails on the first sample.
+// vector lanes) returns, VRL by VRL:
+// - step one's sample v and density: the one-VRL gather's to rounding. The lanes take square
+//   roots by Newton steps and VrlPoint by the instruction, so v agrees to the rounding of a
+//   position on the VRL, and the density to that rounding times its condition: an error dx in
+//   x = k (v - v0) moves p ~ 1 / sqrt(1 + x^2) by at most |dx| / 2 relatively, and rounding
+//   leaves |dx| within a few eps (1 + k L) (x passes near 0 only within k L of the ends);
+// - given that VRL point, exactly the one-VRL gather's camera sample and weight
+//   (FinishMediumGather), to rounding.
+// (Not the whole one-VRL gather from the same random numbers: next to the camera line the
+// camera step turns an ulp of the VRL point into percents of its density, and a fit's node
+// split into a different fit.) The VRLs are random and include the cases step one treats
+// apart: v0 before, inside and after the VRL, near-parallel lines, a VRL crossing the camera
+// line, tiny and long VRLs. A batch that mixed up lanes or random numbers fails on the first
+// sample.
 #include <catch2/catch.hpp>
 #include <vrlis/vrlis.hpp>
 
@@ -40,9 +49,15 @@ vrlis::VrlSegment<Real> RandomVrl(std::mt19937& rng, int kind) {
           Real(length)};
 }
 
-// Equal up to rounding (64 epsilon relative): the lanes may round a contracted multiply-add
-// differently from scalar code when the build enables FMA. Any mix-up of VRLs or random
-// numbers is off by far more.
+// Equal up to rounding (64 epsilon relative, or of `scale`): scalar code and lanes round
+// square roots differently, and contracted multiply-adds when the build enables FMA. Any
+// mix-up of VRLs or random numbers is off by far more.
+template <typename Real>
+bool Close(Real a, Real b, double scale = 0) {
+  return std::abs(double(a) - double(b)) <=
+         64 * std::numeric_limits<Real>::epsilon() * std::max({double(std::abs(a)), double(std::abs(b)), scale});
+}
+
 template <typename Real>
 bool Same(const vrlis::GatherSample<Real>& a, const vrlis::GatherSample<Real>& b) {
   const Real fa[] = {a.camera_point.x, a.camera_point.y, a.camera_point.z, a.light_point.x, a.light_point.y,
@@ -50,9 +65,16 @@ bool Same(const vrlis::GatherSample<Real>& a, const vrlis::GatherSample<Real>& b
   const Real fb[] = {b.camera_point.x, b.camera_point.y, b.camera_point.z, b.light_point.x, b.light_point.y,
                      b.light_point.z, b.t, b.pdf_t, b.v, b.pdf_v, b.transmittance, b.weight};
   for (int i = 0; i < 12; ++i)
-    if (!(std::abs(fa[i] - fb[i]) <= 64 * std::numeric_limits<Real>::epsilon() * std::max(std::abs(fa[i]), std::abs(fb[i]))))
-      return false;
+    if (!Close(fa[i], fb[i])) return false;
   return true;
+}
+
+// k L of step one's density for this VRL and camera line, in double: L sin^2(a) / |d . (w_l x w_c)|.
+template <typename Real>
+double StepOneSpread(const vrlis::RaySegment<Real>& camera, const vrlis::VrlSegment<Real>& vrl) {
+  auto v = [](vrlis::Vec3<Real> a) { return vrlis::Vec3<double>{a.x, a.y, a.z}; };
+  vrlis::Vec3<double> cross = vrlis::Cross(v(vrl.dir), v(camera.dir)), d = v(camera.origin) - v(vrl.origin);
+  return double(vrl.length) * vrlis::Dot(cross, cross) / std::abs(vrlis::Dot(d, cross));
 }
 
 template <typename Real>
@@ -83,9 +105,17 @@ void BatchIsOneAtATime() {
           vrlis::MediumGatherQuery<Real> q{camera, vrls[i], medium};
           REQUIRE(vrlis::Validate(q) == vrlis::QueryError::None);
           INFO(vrlis::Name(method) << ", batch of " << n << ", VRL " << i);
-          REQUIRE(Same(batch[i], vrlis::SampleMediumGather(method, q, u_vrl[i], u_camera[i])));
+          vrlis::GatherSample<Real> one = vrlis::SampleMediumGather(method, q, u_vrl[i], u_camera[i]);
+          REQUIRE(batch[i].contributes() == one.contributes());
           ++compared;
-          contributing += batch[i].contributes();
+          if (!one.contributes()) continue;
+          ++contributing;
+          REQUIRE(Close(batch[i].v, one.v, double(vrls[i].length)));
+          REQUIRE(Close(batch[i].pdf_v, one.pdf_v, (1 + StepOneSpread(camera, vrls[i])) * double(one.pdf_v)));
+          vrlis::WithGatherSamplers<Real>(method, [&](auto, auto step_two) {
+            REQUIRE(Same(batch[i], vrlis::FinishMediumGather<typename decltype(step_two)::type>(
+                                       vrlis::ValidQuery{}, q, {batch[i].v, batch[i].pdf_v}, u_camera[i])));
+          });
         }
       }
       CHECK(contributing > compared / 2);  // the comparison is of estimates, not of empty samples

@@ -84,7 +84,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // Many VRLs against one camera segment, a renderer's inner loop: out[i] is
 // SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
 // (each query valid). Step one with VrlPoint runs kVrlPointBatch VRLs at once as vector
-// lanes (SampleVrlPoints, the same numbers as one at a time).
+// lanes (SampleVrlPoints: the same numbers as one at a time, to rounding).
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
                                           const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
