@@ -12,10 +12,20 @@ void StepOneAlone(benchmark::State& state, double g) {
                         [&](size_t i) { return pools.configs[i].xi_vrl; });
 }
 
+// VrlPoint from the camera line alone (no gather query to validate): what 146a16a's VrlPoint
+// benchmark timed, for tools/speed.sh's comparison.
+void VrlPointFromLine(benchmark::State& state) {
+  const Pools& pools = PoolsFor(0.0);
+  FitSamplePdf<VrlPoint<float>>(
+      state, [&](size_t i) { return VrlPoint<float>::LineQuery(pools.configs[i].query.camera, pools.configs[i].query.vrl); },
+      [&](size_t i) { return pools.configs[i].xi_vrl; });
+}
+
 }  // namespace
 
 void RegisterVrlPoint() {
   benchmark::RegisterBenchmark("VrlPoint", [](benchmark::State& s) { StepOneAlone<VrlPoint<float>>(s, 0.0); });
+  benchmark::RegisterBenchmark("VrlPointFromLine", VrlPointFromLine);
   for (double g : kStudyG)
     benchmark::RegisterBenchmark(BenchName("VrlMarginal", "step", g).c_str(),
                                  [g](benchmark::State& s) { StepOneAlone<VrlMarginal<float>>(s, g); });

@@ -97,7 +97,7 @@ echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
 for rep in $(seq "$reps"); do
   for build in base new; do
     dir=$([ "$build" = base ] && echo "$base" || echo "$new")
-    "${pin[@]}" "$dir/bench/vrlis_bench" --benchmark_filter='^Camera(Separate)?/' --benchmark_min_time=0.05 \
+    "${pin[@]}" "$dir/bench/vrlis_bench" --benchmark_filter='^Camera(Separate)?/|^VrlPoint' --benchmark_min_time=0.05 \
       --benchmark_out="$out/runs/bench_${build}_$rep.json" --benchmark_out_format=json >/dev/null
   done
 done
@@ -133,7 +133,7 @@ for build in ("base", "new"):
     runs = [load(f"{out}/runs/bench_{build}_{r}.json") for r in range(1, reps + 1)]
     for name in {b["name"] for b in runs[0]}:
         times[build, name] = statistics.median(b["cpu_time"] for run in runs for b in run if b["name"] == name)
-names = sorted({n for _, n in times}, key=lambda n: (n.split("/")[1], float(n.split(":")[1])))
+names = sorted({n for _, n in times if ":" in n}, key=lambda n: (n.split("/")[1], float(n.split(":")[1])))
 gs = sorted({float(n.split(":")[1]) for n in names})
 cams = ["Equiangular", "Novak", "CauchySum", "CauchyMixture", "FullProduct"]
 def t(build, cam, g): return times.get((build, f"Camera/{cam}/g:{g:.2f}"))
@@ -145,6 +145,11 @@ for g in gs:
     row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
     ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
+# Step one alone on the same line queries: the baseline's VrlPoint, this tree's VrlPointFromLine
+# (its VrlPoint starts from the whole gather query and validates it).
+base_vp, new_vp = times[("base", "VrlPoint")], times[("new", "VrlPointFromLine")]
+print(f"\nStep one per sample, ns (VrlPoint from the camera line, g = 0 pool; base: fit, sample, pdf; this tree: fit, "
+      f"sample_pdf; median of {reps} interleaved runs): base {base_vp:.0f}, new {new_vp:.0f}, new / base **{new_vp / base_vp:.2f}**")
 print(f"\nWhat the fused call saves in this tree: fit + sample_pdf (Camera) over fit, sample, then pdf(t) (CameraSeparate), per sample\n")
 print("| g | " + " | ".join(cams) + " |")
 print("|---|" + "---|" * len(cams))
