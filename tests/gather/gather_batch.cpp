@@ -6,8 +6,8 @@
 //   position on the VRL, and the density to that rounding times its condition: an error dx in
 //   x = k (v - v0) moves p ~ 1 / sqrt(1 + x^2) by at most |dx| / 2 relatively, and rounding
 //   leaves |dx| within a few eps (1 + k L) (x passes near 0 only within k L of the ends);
-// - given that VRL point, exactly the one-VRL gather's camera sample and weight
-//   (FinishMediumGather), to rounding.
+// - given that VRL point, the one-VRL gather's camera sample and weight (FinishMediumGather)
+//   to rounding: the same code from the same inputs.
 // (Not the whole one-VRL gather from the same random numbers: next to the camera line the
 // camera step turns an ulp of the VRL point into percents of its density, and a fit's node
 // split into a different fit.) The VRLs are random and include the cases step one treats
