@@ -11,6 +11,7 @@
 //   EstimatorMarginal/...      the same with VrlMarginal as step one
 //   VrlPoint                   step one alone (fit, sample, pdf); independent of g
 //   VrlMarginal/step/g:<g>     VrlMarginal alone
+//   VrlMarginalBounded/step/g:<g>  the same over the bounded camera segments only
 //   Gather/<method>/g:<g>      the library's whole gather call, and GatherPart/*: its parts
 //
 // Every benchmark cycles in order through a pool of 1024 random configurations (those of

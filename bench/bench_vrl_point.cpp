@@ -1,4 +1,7 @@
-// VrlPoint and VrlMarginal/g:<g>: step one alone (fit, sample, pdf).
+// VrlPoint and VrlMarginal/step/g:<g>: step one alone (fit, sample_pdf).
+#include <cmath>
+#include <vector>
+
 #include "bench_common.hpp"
 
 namespace vrlis::bench {
@@ -21,6 +24,19 @@ void VrlPointFromLine(benchmark::State& state) {
       [&](size_t i) { return pools.configs[i].xi_vrl; });
 }
 
+// VrlMarginalBounded: the same over the pool's bounded camera segments only (each
+// iteration takes the next one), for comparison with builds that reject unbounded ones
+// (tools/speed.sh against 146a16a).
+void VrlMarginalBounded(benchmark::State& state, double g) {
+  const Pools& pools = PoolsFor(g);
+  std::vector<size_t> bounded;  // kPool indices, cycling through the bounded configurations
+  for (size_t i = 0; bounded.size() < kPool; i = (i + 1) & (kPool - 1))
+    if (std::isfinite(pools.configs[i].query.camera.tmax)) bounded.push_back(i);
+  FitSamplePdf<VrlMarginal<float>>(
+      state, [&](size_t i) -> const MediumGatherQuery<float>& { return pools.configs[bounded[i]].query; },
+      [&](size_t i) { return pools.configs[bounded[i]].xi_vrl; });
+}
+
 }  // namespace
 
 void RegisterVrlPoint() {
@@ -29,6 +45,9 @@ void RegisterVrlPoint() {
   for (double g : kStudyG)
     benchmark::RegisterBenchmark(BenchName("VrlMarginal", "step", g).c_str(),
                                  [g](benchmark::State& s) { StepOneAlone<VrlMarginal<float>>(s, g); });
+  for (double g : kStudyG)
+    benchmark::RegisterBenchmark(BenchName("VrlMarginalBounded", "step", g).c_str(),
+                                 [g](benchmark::State& s) { VrlMarginalBounded(s, g); });
 }
 
 }  // namespace vrlis::bench

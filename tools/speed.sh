@@ -10,13 +10,18 @@
 #   the 2-thread speedup;
 # - vrlis_bench's camera step per sample (fit + sample + pdf: this tree fuses the last two in sample_pdf, the baseline of 146a16a calls sample then pdf), per sampler x g x build, and
 #   the ratios CauchySum / Novak and CauchyMixture / Novak;
+# - step one per sample (VrlPoint, VrlMarginal) against the baseline;
 # - this tree's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries).
 # Environment: VRLIS_SPEED_BASE (a configured baseline build dir; default: commit
-# VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base),
+# VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base; for
+# 146a16a, tools/speed_base_pool.patch first makes its benchmarks draw this tree's query
+# pool, so that both builds time the same queries, and adds VrlMarginalBounded),
 # VRLIS_SPEED_BUILD (this tree's build dir; default build/, or <outdir>/new with
 # VRLIS_SPEED_CXXFLAGS, built here), VRLIS_SPEED_REPS (5),
 # VRLIS_SPEED_SCENES (bidirectional cube), VRLIS_SPEED_SAMPLERS (equiangular novak
-# cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (64: image side), VRLIS_SPEED_SPP (2),
+# cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (128: image side), VRLIS_SPEED_SPP (4; at 64 x 64 x 2
+# a 2-thread render lasts 0.09 s and thread start-up and the last rows' imbalance held its
+# speedup to 1.7-1.9, against 1.95-2.0 here),
 # VRLIS_SPEED_PIN (a CPU number: single-threaded runs are pinned to it with taskset; on a
 # shared machine whose cores are unequally loaded this keeps a run from migrating between them),
 # VRLIS_SPEED_CXXFLAGS (compiler flags for both builds, e.g. -march=x86-64-v3: the same for
@@ -28,11 +33,15 @@ out=${1:-out/speed}
 reps=${VRLIS_SPEED_REPS:-5}
 scenes=${VRLIS_SPEED_SCENES:-bidirectional cube}
 samplers=${VRLIS_SPEED_SAMPLERS:-equiangular novak cauchy-sum cauchy-mixture full-product}
-size=${VRLIS_SPEED_SIZE:-64}
-spp=${VRLIS_SPEED_SPP:-2}
+size=${VRLIS_SPEED_SIZE:-128}
+spp=${VRLIS_SPEED_SPP:-4}
 mkdir -p "$out/runs"
 pin=()
 [ -z "${VRLIS_SPEED_PIN:-}" ] || pin=(taskset -c "$VRLIS_SPEED_PIN")
+# The other CPU: single-threaded renders run on it too, so that the 2-thread speedup is taken
+# over the mean of both CPUs' single-thread rates (on a VM one CPU can be much slower for minutes).
+other=()
+[ -z "${VRLIS_SPEED_PIN:-}" ] || other=(taskset -c "$(( (VRLIS_SPEED_PIN + 1) % $(nproc) ))")
 
 configure() {  # source dir, build dir (build/ keeps its tests: it is the developer's tree)
   local tests=OFF
@@ -49,6 +58,9 @@ if [ -z "$base" ]; then
   ref=${VRLIS_SPEED_BASE_REF:-146a16a}
   rm -rf "$out/base-src" && mkdir -p "$out/base-src"
   git archive "$ref" | tar -x -C "$out/base-src"
+  # The pool of random queries changed after 146a16a (wider, like the scenes' queries):
+  # without the patch the camera-step ratios would compare different queries.
+  [ "$(git rev-parse "$ref")" != "$(git rev-parse 146a16a)" ] || git apply --directory="$out/base-src" tools/speed_base_pool.patch
   base="$out/base"
   configure "$out/base-src" "$base"
 fi
@@ -57,13 +69,15 @@ echo "== vrl_render: $reps rounds, builds interleaved (${size}x${size}, $spp pas
 for rep in $(seq "$reps"); do
   for scene in $scenes; do
     for sampler in $samplers; do
-      for threads in 1 2; do
+      for threads in 1 1b 2; do  # 1b: one thread on the other CPU
+        [ "$threads" != 1b ] || [ ${#other[@]} -gt 0 ] || continue
         for build in base new; do
           dir=$([ "$build" = base ] && echo "$base" || echo "$new")
           stem="$out/runs/${scene}_${sampler}_${threads}_${build}_$rep"
           run=("$dir/examples/vrl_render")
           [ "$threads" != 1 ] || run=("${pin[@]}" "${run[@]}")
-          "${run[@]}" --scene "$scene" --sampler "$sampler" --threads "$threads" --width "$size" \
+          [ "$threads" != 1b ] || run=("${other[@]}" "${run[@]}")
+          "${run[@]}" --scene "$scene" --sampler "$sampler" --threads "${threads%b}" --width "$size" \
             --height "$size" --spp "$spp" --quiet --out "$stem" >/dev/null
         done
       done
@@ -72,8 +86,8 @@ for rep in $(seq "$reps"); do
   echo "   round $rep done"
 done
 
-echo "== vrlis_bench Gather/*, GatherPart/*, Fit/*: this tree only"
-"${pin[@]}" "$new/bench/vrlis_bench" --benchmark_filter='^Gather|^Fit/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
+echo "== vrlis_bench Gather/*, GatherPart/*, Fit/*, Camera/*: this tree only (the parts in one run)"
+"${pin[@]}" "$new/bench/vrlis_bench" --benchmark_filter='^Gather|^(Fit|Camera)/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
   --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/runs/parts.json" --benchmark_out_format=json >/dev/null
 if command -v perf >/dev/null; then
@@ -97,25 +111,29 @@ echo "== vrlis_bench Camera/*: $reps rounds, builds interleaved"
 for rep in $(seq "$reps"); do
   for build in base new; do
     dir=$([ "$build" = base ] && echo "$base" || echo "$new")
-    "${pin[@]}" "$dir/bench/vrlis_bench" --benchmark_filter='^Camera(Separate)?/|^VrlPoint' --benchmark_min_time=0.05 \
+    "${pin[@]}" "$dir/bench/vrlis_bench" --benchmark_filter='^Camera(Separate)?/|^VrlPoint|^VrlMarginalBounded/' --benchmark_min_time=0.05 \
       --benchmark_out="$out/runs/bench_${build}_$rep.json" --benchmark_out_format=json >/dev/null
   done
 done
 
 /usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" <<'EOF' | tee "$out/speed.md"
-import json, math, statistics, sys
+import json, math, os, statistics, sys
 out, reps, scenes, samplers = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(), sys.argv[4].split()
 def gps(scene, sampler, threads, build):
     return statistics.median(json.load(open(f"{out}/runs/{scene}_{sampler}_{threads}_{build}_{r}.json"))["gathers_per_second"]
                              for r in range(1, reps + 1))
-print(f"VRL gathers per second (median of {reps} interleaved runs; M = 1e6)\n")
-print("| scene | sampler | base 1T | new 1T | new / base 1T | base 2T | new 2T | new / base 2T | 2T / 1T base | 2T / 1T new |")
+both = os.path.exists(f"{out}/runs/{scenes[0]}_{samplers[0]}_1b_new_1.json")  # 1T runs on both CPUs
+print(f"VRL gathers per second (median of {reps} interleaved runs; M = 1e6; 1T pinned to one CPU"
+      + ("; the speedup is 2T over the mean of the 1T rates on either CPU" if both else "") + ")\n")
+print("| scene | sampler | base 1T | new 1T | new / base 1T | base 2T | new 2T | new / base 2T | speedup 2T base | speedup 2T new |")
 print("|---|---|---|---|---|---|---|---|---|---|")
+def one_thread(scene, s, b):
+    return (gps(scene, s, "1", b) + gps(scene, s, "1b", b)) / 2 if both else gps(scene, s, "1", b)
 for scene in scenes:
     for s in samplers:
-        b1, n1, b2, n2 = (gps(scene, s, t, b) for t, b in ((1, "base"), (1, "new"), (2, "base"), (2, "new")))
+        b1, n1, b2, n2 = (gps(scene, s, t, b) for t, b in (("1", "base"), ("1", "new"), ("2", "base"), ("2", "new")))
         print(f"| {scene} | {s} | {b1/1e6:.2f} M | {n1/1e6:.2f} M | **{n1/b1:.2f}** | {b2/1e6:.2f} M | {n2/1e6:.2f} M | "
-              f"{n2/b2:.2f} | {b2/b1:.2f} | **{n2/n1:.2f}** |")
+              f"{n2/b2:.2f} | {b2/one_thread(scene, s, 'base'):.2f} | **{n2/one_thread(scene, s, 'new'):.2f}** |")
 # The baseline names its benchmarks by class (Camera/Novak), this tree by registry name
 # (Camera/novak): both are read under the class name.
 CLASS = {"equiangular": "Equiangular", "novak": "Novak", "cauchy-sum": "CauchySum", "cauchy-mixture": "CauchyMixture",
@@ -150,6 +168,15 @@ for g in gs:
 base_vp, new_vp = times[("base", "VrlPoint")], times[("new", "VrlPointFromLine")]
 print(f"\nStep one per sample, ns (VrlPoint from the camera line, g = 0 pool; base: fit, sample, pdf; this tree: fit, "
       f"sample_pdf; median of {reps} interleaved runs): base {base_vp:.0f}, new {new_vp:.0f}, new / base **{new_vp / base_vp:.2f}**")
+vm = [(g, times[("base", f"VrlMarginalBounded/step/g:{g:.2f}")], times[("new", f"VrlMarginalBounded/step/g:{g:.2f}")])
+      for g in gs]
+print(f"\nStep one with VrlMarginal per sample, ns (fit + sample + pdf as above, over the pool's bounded camera segments: "
+      f"the baseline cannot fit unbounded ones; median of {reps} interleaved runs)\n")
+print("| g | " + " | ".join(f"{g:g}" for g, _, _ in vm) + " |")
+print("|---|" + "---|" * len(vm))
+print("| base | " + " | ".join(f"{b:.0f}" for _, b, _ in vm) + " |")
+print("| new | " + " | ".join(f"{n:.0f}" for _, _, n in vm) + " |")
+print("| new / base | " + " | ".join(f"**{n / b:.2f}**" for _, b, n in vm) + " |")
 print(f"\nWhat the fused call saves in this tree: fit + sample_pdf (Camera) over fit, sample, then pdf(t) (CameraSeparate), per sample\n")
 print("| g | " + " | ".join(cams) + " |")
 print("|---|" + "---|" * len(cams))
@@ -174,7 +201,7 @@ print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit
 print("|---|---|---|---|---|---|---|---|---|---|")
 for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
     for g in (-0.9, 0.5, 0.9):
-        whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], t("new", c, g)
+        whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], parts[f"Camera/{c}/g:{g:.2f}"]
         v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
         batched = parts[f"GatherBatch/{c}/g:{g:.2f}"] / 8
         print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} |")
