@@ -51,6 +51,7 @@ configure() {  # source dir, build dir (build/ keeps its tests: it is the develo
   cmake --build "$2" --target vrl_render vrlis_bench -j"$(nproc)" >/dev/null
 }
 new=${VRLIS_SPEED_BUILD:-build}
+patched=
 [ -n "${VRLIS_SPEED_BUILD:-}" ] || [ -z "${VRLIS_SPEED_CXXFLAGS:-}" ] || new="$out/new"  # never reconfigure build/ with other flags
 [ -n "${VRLIS_SPEED_BUILD:-}" ] || configure . "$new"
 base=${VRLIS_SPEED_BASE:-}
@@ -60,7 +61,10 @@ if [ -z "$base" ]; then
   git archive "$ref" | tar -x -C "$out/base-src"
   # The pool of random queries changed after 146a16a (wider, like the scenes' queries):
   # without the patch the camera-step ratios would compare different queries.
-  [ "$(git rev-parse "$ref")" != "$(git rev-parse 146a16a)" ] || git apply --directory="$out/base-src" tools/speed_base_pool.patch
+  if [ "$(git rev-parse "$ref")" = "$(git rev-parse 146a16a)" ]; then
+    git apply --directory="$out/base-src" tools/speed_base_pool.patch
+    patched=1
+  fi
   base="$out/base"
   configure "$out/base-src" "$base"
 fi
@@ -223,7 +227,7 @@ if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
   model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
   header() {
     echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`${VRLIS_SPEED_CXXFLAGS:+VRLIS_SPEED_CXXFLAGS=\"$VRLIS_SPEED_CXXFLAGS\" }tools/speed.sh\`"
-    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}; both builds ${VRLIS_SPEED_CXXFLAGS:+with $VRLIS_SPEED_CXXFLAGS, }Release;"
+    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}${patched:+, its benchmarks patched to draw the queries of this tree (tools/speed_base_pool.patch)}; both builds ${VRLIS_SPEED_CXXFLAGS:+with $VRLIS_SPEED_CXXFLAGS, }Release;"
     echo "$reps interleaved rounds;${VRLIS_SPEED_PIN:+ single-threaded runs pinned to CPU $VRLIS_SPEED_PIN;} load average"
     echo "at the end $(cut -d' ' -f1-3 /proc/loadavg): above the core count, the 2-thread columns measure the other load)."
     echo
