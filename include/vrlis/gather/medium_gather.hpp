@@ -5,6 +5,7 @@
 //   sigma_s^2 rho(w_c . w) rho(-w_l . w) T(t - tmin) T(v) T(|y - x|) / |y - x|^2,
 // w the unit vector from the camera point x(t) to the VRL point y(v).
 #include <algorithm>
+#include <optional>
 #include <type_traits>
 
 #include "../method.hpp"
@@ -52,14 +53,12 @@ decltype(auto) WithGatherSamplers(GatherMethod method, F&& f) {
   });
 }
 
-// Step two and the weight for step one's sample v (usable or not) and u_camera.
-template <typename CameraSampler, typename Real>
-[[gnu::always_inline]] inline GatherSample<Real> FinishMediumGather(ValidQuery, const MediumGatherQuery<Real>& q,
-                                                                    SegmentSample<Real> v, Real u_camera) {
-  if (!detail::Usable(v)) return {};
+// The gather's outcome for step one's sample v and step two's sample t (either may be unusable).
+template <typename Real>
+[[gnu::always_inline]] inline GatherSample<Real> FinishWithCamera(const MediumGatherQuery<Real>& q, SegmentSample<Real> v,
+                                                                  SegmentSample<Real> t) {
+  if (!detail::Usable(v) || !detail::Usable(t)) return {};
   Vec3<Real> y = q.vrl.at(v.t);
-  SegmentSample<Real> t = CameraSampler(ValidQuery{}, CameraStepQuery(q, y)).sample_pdf(u_camera);
-  if (!detail::Usable(t)) return {};
   GatherSample<Real> s;
   s.camera_point = q.camera.at(t.t);
   s.light_point = y;
@@ -69,6 +68,15 @@ template <typename CameraSampler, typename Real>
   s.pdf_v = v.pdf;
   Real f = MediumGatherIntegrand(q, t.t, v.t, &s.transmittance);
   return detail::Finish(s, f, t.pdf * v.pdf);
+}
+
+// Step two and the weight for step one's sample v (usable or not) and u_camera.
+template <typename CameraSampler, typename Real>
+[[gnu::always_inline]] inline GatherSample<Real> FinishMediumGather(ValidQuery, const MediumGatherQuery<Real>& q,
+                                                                    SegmentSample<Real> v, Real u_camera) {
+  if (!detail::Usable(v)) return {};
+  Vec3<Real> y = q.vrl.at(v.t);
+  return FinishWithCamera(q, v, CameraSampler(ValidQuery{}, CameraStepQuery(q, y)).sample_pdf(u_camera));
 }
 
 // One estimate from two uniform numbers (u_vrl for step one, u_camera for step two) with
@@ -84,7 +92,11 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // Many VRLs against one camera segment, a renderer's inner loop: out[i] is
 // SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
 // (each query valid). Step one with VrlPoint runs kVrlPointBatch VRLs at once as vector
-// lanes (SampleVrlPoints: the same numbers as one at a time, to rounding).
+// lanes (SampleVrlPoints: the same numbers as one at a time, to rounding). The rest runs in
+// phases, each a loop over the batch (camera fits, their samples, the integrands): one
+// gather is a long chain of dependent operations, the gathers of a phase are independent,
+// and a loop over them lets the processor overlap their chains, which one whole gather after
+// another (too many instructions for its reordering window) did not. Same numbers, fewer cycles.
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
                                           const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
@@ -98,9 +110,16 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       for (int i = 0; i < n; ++i)
         v[i] = StepOneSampler(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first + i], medium}).sample_pdf(u_vrl[first + i]);
     }
+    std::optional<CameraSampler> fit[kVrlPointBatch];  // none where step one sampled nothing
+    for (int i = 0; i < n; ++i) {
+      if (!detail::Usable(v[i])) continue;
+      MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
+      fit[i].emplace(ValidQuery{}, CameraStepQuery(q, q.vrl.at(v[i].t)));
+    }
+    SegmentSample<Real> t[kVrlPointBatch];
+    for (int i = 0; i < n; ++i) t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
     for (int i = 0; i < n; ++i)
-      out[first + i] = FinishMediumGather<CameraSampler>(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first + i], medium},
-                                                         v[i], u_camera[first + i]);
+      out[first + i] = FinishWithCamera(MediumGatherQuery<Real>{camera, vrls[first + i], medium}, v[i], t[i]);
   }
 }
 
