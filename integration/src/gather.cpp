@@ -92,12 +92,24 @@ Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p
                      vrlis::Validate(medium) == vrlis::QueryError::None;
   return vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
     using Sampler = typename decltype(entry)::template Sampler<float>;
+    constexpr int kBatch = vrlis::kVrlPointBatch;
     Spectrum sum;
-    for (const Vrl& vrl : vrls) {
-      float u = rng.Uniform();
-      vrlis::SurfaceGatherQuery<float> q{p, nf, SegmentOf(vrl), medium};
-      if (!valid || vrlis::Validate(q.vrl) != vrlis::QueryError::None) continue;
-      sum += vrl.flux * Connect(scene, vrlis::SampleSurfaceGather<Sampler>(vrlis::ValidQuery{}, q, u));
+    for (std::size_t chunk = 0; chunk < vrls.size(); chunk += kBatch) {
+      vrlis::VrlSegment<float> segments[kBatch];
+      float u[kBatch];
+      const Vrl* source[kBatch];
+      int count = 0;
+      for (std::size_t i = chunk; i < std::min(chunk + kBatch, vrls.size()); ++i) {
+        float ui = rng.Uniform();  // drawn for every VRL: images do not depend on batching
+        vrlis::VrlSegment<float> segment = SegmentOf(vrls[i]);
+        if (!valid || vrlis::Validate(segment) != vrlis::QueryError::None) continue;
+        segments[count] = segment;
+        u[count] = ui;
+        source[count++] = &vrls[i];
+      }
+      vrlis::GatherSample<float> samples[kBatch];
+      vrlis::SampleSurfaceGathers<Sampler>(vrlis::ValidQuery{}, p, nf, medium, segments, count, u, samples);
+      for (int i = 0; i < count; ++i) sum += source[i]->flux * Connect(scene, samples[i]);
     }
     return albedo * sum;
   });

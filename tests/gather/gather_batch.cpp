@@ -1,4 +1,6 @@
-// Hypothesis: the batched medium gather is the one-VRL gather. For every step one x step two,
+// Hypotheses: the batched gathers are the one-VRL gathers.
+//
+// Medium to medium: for every step one x step two,
 // SampleMediumGathers over a camera segment and n VRLs (n from 1 to past two batches of
 // vector lanes) returns, VRL by VRL:
 // - step one's sample v and density: the one-VRL gather's to rounding. The lanes take square
@@ -14,6 +16,10 @@
 // apart: v0 before, inside and after the VRL, near-parallel lines, a VRL crossing the camera
 // line, tiny and long VRLs. A batch that mixed up lanes or random numbers fails on the first
 // sample.
+//
+// Medium to surface: for every VRL sampler, SampleSurfaceGathers over a surface point and n
+// VRLs returns, VRL by VRL, the one-VRL gather (SampleSurfaceGather) from the same random
+// number: the same code from the same inputs, equal to rounding.
 #include <catch2/catch.hpp>
 #include <vrlis/vrlis.hpp>
 
@@ -122,7 +128,46 @@ void BatchIsOneAtATime() {
     }
 }
 
+template <typename Real>
+void SurfaceBatchIsOneAtATime() {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<Real> uniform(0, 1);
+  const vrlis::Medium<Real> medium{Real(0.6), Real(0.4), Real(0.5)};
+  const vrlis::Vec3<Real> point{0, 0, -2}, normal = vrlis::Normalize(vrlis::Vec3<Real>{Real(0.3), Real(-0.2), Real(-1)});
+  for (vrlis::Method method : vrlis::kMethods) {
+    int contributing = 0, compared = 0;
+    for (int n = 1; n <= 19; ++n) {
+      std::vector<vrlis::VrlSegment<Real>> vrls;
+      std::vector<Real> u;
+      for (int i = 0; i < n; ++i) {
+        vrls.push_back(RandomVrl<Real>(rng, i + n));
+        u.push_back(uniform(rng));
+      }
+      std::vector<vrlis::GatherSample<Real>> batch(n);
+      vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
+        vrlis::SampleSurfaceGathers<typename decltype(entry)::template Sampler<Real>>(
+            vrlis::ValidQuery{}, point, normal, medium, vrls.data(), n, u.data(), batch.data());
+      });
+      for (int i = 0; i < n; ++i) {
+        vrlis::SurfaceGatherQuery<Real> q{point, normal, vrls[i], medium};
+        REQUIRE(vrlis::Validate(q) == vrlis::QueryError::None);
+        INFO(vrlis::Name(method) << ", batch of " << n << ", VRL " << i);
+        vrlis::GatherSample<Real> one = vrlis::SampleSurfaceGather(method, q, u[i]);
+        REQUIRE(batch[i].contributes() == one.contributes());
+        ++compared;
+        if (!one.contributes()) continue;
+        ++contributing;
+        REQUIRE(Same(batch[i], one));
+      }
+    }
+    CHECK(contributing > compared / 4);  // enough VRLs face the surface to compare estimates
+  }
+}
+
 }  // namespace
+
+TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (float)") { SurfaceBatchIsOneAtATime<float>(); }
+TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (double)") { SurfaceBatchIsOneAtATime<double>(); }
 
 TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (float)") { BatchIsOneAtATime<float>(); }
 TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (double)") { BatchIsOneAtATime<double>(); }

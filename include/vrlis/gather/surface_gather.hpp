@@ -4,6 +4,9 @@
 //   sigma_s rho(-w_l . w) max(0, n . w) / pi T(v) T(|y - p|) / |y - p|^2,
 // w the unit vector from the surface point p to the VRL point y(v); the renderer multiplies
 // by the surface's albedo.
+#include <algorithm>
+#include <optional>
+
 #include "../method.hpp"
 #include "gather_sample.hpp"
 
@@ -32,11 +35,10 @@ Real SurfaceGatherIntegrand(const SurfaceGatherQuery<Real>& q, Real v, Real* tra
          std::exp(-m.sigma_t * v) * connection / r2;
 }
 
-// One estimate with the sampler fixed at compile time, for a query the caller has validated
-// (flattened, as SampleMediumGather's typed form).
-template <typename Sampler, typename Real>
-[[gnu::flatten]] GatherSample<Real> SampleSurfaceGather(ValidQuery, const SurfaceGatherQuery<Real>& q, Real u) {
-  SegmentSample<Real> v = Sampler(ValidQuery{}, VrlStepQuery(q)).sample_pdf(u);
+// The gather's outcome for the VRL sample v (usable or not).
+template <typename Real>
+[[gnu::always_inline]] inline GatherSample<Real> FinishSurfaceGather(const SurfaceGatherQuery<Real>& q,
+                                                                     SegmentSample<Real> v) {
   if (!detail::Usable(v)) return {};
   GatherSample<Real> s;
   s.camera_point = q.point;
@@ -45,6 +47,32 @@ template <typename Sampler, typename Real>
   s.pdf_v = v.pdf;
   Real f = SurfaceGatherIntegrand(q, v.t, &s.transmittance);
   return detail::Finish(s, f, v.pdf);
+}
+
+// One estimate with the sampler fixed at compile time, for a query the caller has validated
+// (flattened, as SampleMediumGather's typed form).
+template <typename Sampler, typename Real>
+[[gnu::flatten]] GatherSample<Real> SampleSurfaceGather(ValidQuery, const SurfaceGatherQuery<Real>& q, Real u) {
+  return FinishSurfaceGather(q, Sampler(ValidQuery{}, VrlStepQuery(q)).sample_pdf(u));
+}
+
+// Many VRLs seen from one surface point, a renderer's inner loop: out[i] is
+// SampleSurfaceGather for {point, normal, vrls[i], medium} with u[i] (each query valid), run
+// in phases over batches as SampleMediumGathers (fits, samples, integrands): same numbers.
+template <typename Sampler, typename Real>
+[[gnu::flatten]] void SampleSurfaceGathers(ValidQuery, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
+                                           const VrlSegment<Real>* vrls, int count, const Real* u,
+                                           GatherSample<Real>* out) {
+  constexpr int kBatch = 8;  // enough independent gathers to fill the processor's reordering window
+  for (int first = 0; first < count; first += kBatch) {
+    int n = std::min(kBatch, count - first);
+    std::optional<Sampler> fit[kBatch];
+    for (int i = 0; i < n; ++i) fit[i].emplace(ValidQuery{}, VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}));
+    SegmentSample<Real> v[kBatch];
+    for (int i = 0; i < n; ++i) v[i] = fit[i]->sample_pdf(u[first + i]);
+    for (int i = 0; i < n; ++i)
+      out[first + i] = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
+  }
 }
 
 // The same with the sampler chosen at run time; any query (an invalid one samples nothing).
