@@ -166,8 +166,12 @@ void SurfaceBatchIsOneAtATime() {
 
 }  // namespace
 
-TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (float)") { SurfaceBatchIsOneAtATime<float>(); }
-TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (double)") { SurfaceBatchIsOneAtATime<double>(); }
+TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (float)") {
+  SurfaceBatchIsOneAtATime<float>();
+}
+TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (double)") {
+  SurfaceBatchIsOneAtATime<double>();
+}
 
 TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (float)") { BatchIsOneAtATime<float>(); }
 TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (double)") { BatchIsOneAtATime<double>(); }

@@ -67,7 +67,8 @@ template <typename Sampler, typename Real>
   for (int first = 0; first < count; first += kBatch) {
     int n = std::min(kBatch, count - first);
     std::optional<Sampler> fit[kBatch];
-    for (int i = 0; i < n; ++i) fit[i].emplace(ValidQuery{}, VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}));
+    for (int i = 0; i < n; ++i)
+      fit[i].emplace(ValidQuery{}, VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}));
     SegmentSample<Real> v[kBatch];
     for (int i = 0; i < n; ++i) v[i] = fit[i]->sample_pdf(u[first + i]);
     for (int i = 0; i < n; ++i)
