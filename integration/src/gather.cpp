@@ -35,9 +35,46 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 
 namespace {
 
-// The sum over the VRLs [first, last): the samplers are chosen and the camera segment and
-// medium validated once for all of them, and the valid VRLs go to the library in batches
-// (its step one runs a batch as vector lanes).
+// A batch of VRLs for one of the library's batched gathers: the valid ones, their random
+// numbers (u[k][i]: the k-th of VRL i) and the VRLs they came from.
+template <int kUniforms>
+struct VrlBatch {
+  static constexpr int kSize = vrlis::kVrlPointBatch;
+  vrlis::VrlSegment<float> segments[kSize];
+  float u[kUniforms][kSize];
+  const Vrl* source[kSize];
+  int count = 0;
+};
+
+// sum flux * Connect over the VRLs [first, last), a batch at a time: gather(batch, samples)
+// samples the batch; on_vrl(segment, vrl) sees every VRL, valid or not. kUniforms random
+// numbers are drawn for every VRL, so images do not depend on batching or validity.
+template <int kUniforms, typename OnVrl, typename Gather>
+Spectrum SumOverBatches(const Scene& scene, const Vrl* first, const Vrl* last, bool valid, Rng& rng, OnVrl&& on_vrl,
+                        Gather&& gather) {
+  using Batch = VrlBatch<kUniforms>;
+  Spectrum sum;
+  for (std::ptrdiff_t begin = 0; begin < last - first; begin += Batch::kSize) {
+    Batch batch;
+    for (const Vrl* vrl = first + begin; vrl != first + std::min(begin + Batch::kSize, last - first); ++vrl) {
+      float u[kUniforms];
+      for (float& x : u) x = rng.Uniform();
+      vrlis::VrlSegment<float> segment = SegmentOf(*vrl);
+      on_vrl(segment, *vrl);
+      if (!valid || vrlis::Validate(segment) != vrlis::QueryError::None) continue;
+      batch.segments[batch.count] = segment;
+      for (int k = 0; k < kUniforms; ++k) batch.u[k][batch.count] = u[k];
+      batch.source[batch.count++] = vrl;
+    }
+    vrlis::GatherSample<float> samples[Batch::kSize];
+    gather(batch, samples);
+    for (int i = 0; i < batch.count; ++i) sum += batch.source[i]->flux * Connect(scene, samples[i]);
+  }
+  return sum;
+}
+
+// The medium-to-medium sum over the VRLs [first, last): the samplers are chosen and the
+// camera segment and medium validated once for all of them.
 Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
@@ -47,29 +84,15 @@ Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const Camera
   return vrlis::WithGatherSamplers<float>(method, [&](auto step_one, auto step_two) {
     using StepOne = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
-    constexpr int kBatch = vrlis::kVrlPointBatch;
-    Spectrum sum;
-    for (const Vrl* chunk = first; chunk < last; chunk += kBatch) {
-      vrlis::VrlSegment<float> vrls[kBatch];
-      float u_vrl[kBatch], u_camera[kBatch];
-      const Vrl* source[kBatch];
-      int count = 0;
-      for (const Vrl* vrl = chunk; vrl != std::min(chunk + kBatch, last); ++vrl) {
-        float u1 = rng.Uniform(), u2 = rng.Uniform();  // drawn for every VRL: images do not depend on batching
-        vrlis::VrlSegment<float> segment = SegmentOf(*vrl);
-        if (log) log->Record({camera, segment, medium}, RmsRgb(throughput * vrl->flux));
-        if (!valid || vrlis::Validate(segment) != vrlis::QueryError::None) continue;
-        vrls[count] = segment;
-        u_vrl[count] = u1;
-        u_camera[count] = u2;
-        source[count++] = vrl;
-      }
-      vrlis::GatherSample<float> samples[kBatch];
-      vrlis::SampleMediumGathers<StepOne, StepTwo>(vrlis::ValidQuery{}, camera, medium, vrls, count, u_vrl, u_camera,
-                                                   samples);
-      for (int i = 0; i < count; ++i) sum += source[i]->flux * Connect(scene, samples[i]);
-    }
-    return sum;
+    return SumOverBatches<2>(
+        scene, first, last, valid, rng,
+        [&](const vrlis::VrlSegment<float>& segment, const Vrl& vrl) {
+          if (log) log->Record({camera, segment, medium}, RmsRgb(throughput * vrl.flux));
+        },
+        [&](const VrlBatch<2>& b, vrlis::GatherSample<float>* samples) {
+          vrlis::SampleMediumGathers<StepOne, StepTwo>(vrlis::ValidQuery{}, camera, medium, b.segments, b.count, b.u[0],
+                                                       b.u[1], samples);
+        });
   });
 }
 
@@ -90,28 +113,13 @@ Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   const bool valid = vrlis::ValidateSurfacePoint(p, nf) == vrlis::QueryError::None &&
                      vrlis::Validate(medium) == vrlis::QueryError::None;
-  return vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
+  return albedo * vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
     using Sampler = typename decltype(entry)::template Sampler<float>;
-    constexpr int kBatch = vrlis::kVrlPointBatch;
-    Spectrum sum;
-    for (std::size_t chunk = 0; chunk < vrls.size(); chunk += kBatch) {
-      vrlis::VrlSegment<float> segments[kBatch];
-      float u[kBatch];
-      const Vrl* source[kBatch];
-      int count = 0;
-      for (std::size_t i = chunk; i < std::min(chunk + kBatch, vrls.size()); ++i) {
-        float ui = rng.Uniform();  // drawn for every VRL: images do not depend on batching
-        vrlis::VrlSegment<float> segment = SegmentOf(vrls[i]);
-        if (!valid || vrlis::Validate(segment) != vrlis::QueryError::None) continue;
-        segments[count] = segment;
-        u[count] = ui;
-        source[count++] = &vrls[i];
-      }
-      vrlis::GatherSample<float> samples[kBatch];
-      vrlis::SampleSurfaceGathers<Sampler>(vrlis::ValidQuery{}, p, nf, medium, segments, count, u, samples);
-      for (int i = 0; i < count; ++i) sum += source[i]->flux * Connect(scene, samples[i]);
-    }
-    return albedo * sum;
+    return SumOverBatches<1>(
+        scene, vrls.data(), vrls.data() + vrls.size(), valid, rng, [](const vrlis::VrlSegment<float>&, const Vrl&) {},
+        [&](const VrlBatch<1>& b, vrlis::GatherSample<float>* samples) {
+          vrlis::SampleSurfaceGathers<Sampler>(vrlis::ValidQuery{}, p, nf, medium, b.segments, b.count, b.u[0], samples);
+        });
   });
 }
 
