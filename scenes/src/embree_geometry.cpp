@@ -1,10 +1,87 @@
 #include "embree_geometry.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace vrl_render {
 
 using vrli::Vec3f;
+
+namespace {
+
+using Sphere = EmbreeGeometry::Sphere;
+
+// Ray parameters of a ray's entry into and exit from a sphere, t0 <= t1, or false if the ray
+// misses it. The discriminant and roots are taken in the forms that do not cancel (Haines
+// et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019).
+bool SphereRoots(const Sphere& s, Vec3f o, Vec3f d, float* t0, float* t1) {
+  Vec3f f = o - s.center;
+  float a = vrli::Dot(d, d), b = -vrli::Dot(f, d);
+  Vec3f l = f + (b / a) * d;  // f less its component along d
+  float disc = s.radius * s.radius - vrli::Dot(l, l);
+  if (!(disc >= 0)) return false;
+  float c = vrli::Dot(f, f) - s.radius * s.radius;
+  float q = b + std::copysign(std::sqrt(a * disc), b);
+  *t0 = c / q;
+  *t1 = q / a;
+  if (*t0 > *t1) std::swap(*t0, *t1);
+  return true;
+}
+
+// Ray i of a set of n rays that Embree hands to a user geometry.
+Vec3f OriginOf(RTCRayN* rays, unsigned n, unsigned i) {
+  return {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+}
+Vec3f DirectionOf(RTCRayN* rays, unsigned n, unsigned i) {
+  return {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+}
+
+// The first root along ray i that lies in its (tnear, tfar), if any.
+bool FirstRootInside(const Sphere& s, RTCRayN* rays, unsigned n, unsigned i, float* t) {
+  float t0, t1;
+  if (!SphereRoots(s, OriginOf(rays, n, i), DirectionOf(rays, n, i), &t0, &t1)) return false;
+  float tnear = RTCRayN_tnear(rays, n, i);
+  *t = t0 > tnear ? t0 : t1;
+  return *t > tnear && *t < RTCRayN_tfar(rays, n, i);
+}
+
+void SphereBounds(const RTCBoundsFunctionArguments* args) {
+  const Sphere& s = static_cast<const Sphere*>(args->geometryUserPtr)[args->primID];
+  *args->bounds_o = {s.center.x - s.radius, s.center.y - s.radius, s.center.z - s.radius, 0,
+                     s.center.x + s.radius, s.center.y + s.radius, s.center.z + s.radius, 0};
+}
+
+void SphereIntersect(const RTCIntersectFunctionNArguments* args) {
+  const Sphere& s = static_cast<const Sphere*>(args->geometryUserPtr)[args->primID];
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+  for (unsigned i = 0; i < args->N; ++i) {
+    float t;
+    if (!args->valid[i] || !FirstRootInside(s, rays, args->N, i, &t)) continue;
+    RTCRayN_tfar(rays, args->N, i) = t;
+    Vec3f n = OriginOf(rays, args->N, i) + t * DirectionOf(rays, args->N, i) - s.center;
+    RTCHitN_Ng_x(hits, args->N, i) = n.x;
+    RTCHitN_Ng_y(hits, args->N, i) = n.y;
+    RTCHitN_Ng_z(hits, args->N, i) = n.z;
+    RTCHitN_u(hits, args->N, i) = RTCHitN_v(hits, args->N, i) = 0;
+    RTCHitN_primID(hits, args->N, i) = args->primID;
+    RTCHitN_geomID(hits, args->N, i) = args->geomID;
+    RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+  }
+}
+
+void SphereOccluded(const RTCOccludedFunctionNArguments* args) {
+  const Sphere& s = static_cast<const Sphere*>(args->geometryUserPtr)[args->primID];
+  for (unsigned i = 0; i < args->N; ++i) {
+    float t;
+    if (args->valid[i] && FirstRootInside(s, args->ray, args->N, i, &t))
+      RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
+  }
+}
+
+}  // namespace
 
 EmbreeGeometry::EmbreeGeometry() {
   device_ = rtcNewDevice(nullptr);
@@ -49,19 +126,16 @@ void EmbreeGeometry::Commit() {
     quad_geometry_ = rtcAttachGeometry(scene_, g);
     rtcReleaseGeometry(g);
   }
-  for (std::size_t i = 0; i < spheres_.size(); ++i) {
-    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* v = static_cast<float*>(
-        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-    v[0] = spheres_[i].center.x;
-    v[1] = spheres_[i].center.y;
-    v[2] = spheres_[i].center.z;
-    v[3] = spheres_[i].radius;
+  if (!spheres_.empty()) {
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(spheres_.size()));
+    rtcSetGeometryUserData(g, spheres_.data());
+    rtcSetGeometryBoundsFunction(g, SphereBounds, nullptr);
+    rtcSetGeometryIntersectFunction(g, SphereIntersect);
+    rtcSetGeometryOccludedFunction(g, SphereOccluded);
     rtcCommitGeometry(g);
-    unsigned id = rtcAttachGeometry(scene_, g);
+    sphere_geometry_ = rtcAttachGeometry(scene_, g);
     rtcReleaseGeometry(g);
-    if (sphere_of_geometry_.size() <= id) sphere_of_geometry_.resize(id + 1, -1);
-    sphere_of_geometry_[id] = static_cast<int>(i);
   }
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcCommitScene(scene_);
@@ -89,7 +163,7 @@ bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHi
     hit->n = vrli::Normalize(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
     hit->material = quad_materials_[rh.hit.primID];
   } else {
-    const Sphere& s = spheres_[static_cast<std::size_t>(sphere_of_geometry_[rh.hit.geomID])];
+    const Sphere& s = spheres_[rh.hit.primID];
     hit->n = vrli::Normalize(hit->p - s.center);  // outwards
     hit->material = s.material;
   }

@@ -1,5 +1,6 @@
 #pragma once
-// The pipeline's Geometry implemented with Embree 3: quads and spheres.
+// The pipeline's Geometry implemented with Embree 3: quads, and spheres as a user geometry
+// (an analytic test, which traces in about half the time of Embree's sphere points).
 #include <embree3/rtcore.h>
 
 #include <vector>
@@ -26,19 +27,20 @@ class EmbreeGeometry : public vrli::Geometry {
   bool Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHit* hit) const override;
   bool Occluded(vrli::Vec3f p0, vrli::Vec3f p1) const override;
 
- private:
   struct Sphere {
     vrli::Vec3f center;
     float radius;
     int material;
   };
+
+ private:
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<vrli::Vec3f> quad_vertices_;
   std::vector<int> quad_materials_;
   std::vector<Sphere> spheres_;
   unsigned quad_geometry_ = RTC_INVALID_GEOMETRY_ID;
-  std::vector<int> sphere_of_geometry_;  // geometry id -> index into spheres_, or -1
+  unsigned sphere_geometry_ = RTC_INVALID_GEOMETRY_ID;  // one user geometry: primitive i is spheres_[i]
 };
 
 }  // namespace vrl_render
