@@ -6,6 +6,9 @@
 //   GatherBatch/<method>/g:<g>  SampleMediumGathers: one camera segment against kVrlPointBatch
 //                           VRLs (the camera of configuration 8k, the VRLs of 8k .. 8k + 7),
 //                           time per iteration, that is per batch (divide by 8 for one gather)
+//   SurfaceGatherBatch/<method>/g:<g>  SampleSurfaceGathers: the VRLs of 8k .. 8k + 7 seen from
+//                           the camera origin of configuration 8k, a surface point whose normal is
+//                           that camera's direction (the medium-to-surface gather); per batch
 //   GatherPart/validate     Validate(MediumGatherQuery)
 //   GatherPart/step-one     VrlPoint from the gather query, sample_pdf
 //   GatherPart/integrand    MediumGatherIntegrand at a sampled (t, v), with its transmittance
@@ -16,6 +19,7 @@
 #include "bench_common.hpp"
 
 #include <vrlis/gather/medium_gather.hpp>
+#include <vrlis/gather/surface_gather.hpp>
 
 #include <vector>
 
@@ -53,6 +57,30 @@ void GatherBatch(benchmark::State& state, Method method, double g) {
       const MediumGatherQuery<float>& q = pools.configs[first].query;
       SampleMediumGathers<typename decltype(step_one)::type, typename decltype(step_two)::type>(
           ValidQuery{}, q.camera, q.medium, &vrls[first], kVrlPointBatch, &u_vrl[first], &u_camera[first], out);
+      benchmark::DoNotOptimize(out);
+      b = b + 1 == batches ? 0 : b + 1;
+    }
+  });
+  state.SetItemsProcessed(state.iterations() * kVrlPointBatch);
+}
+
+void SurfaceGatherBatch(benchmark::State& state, Method method, double g) {
+  const Pools& pools = PoolsFor(g);
+  std::vector<VrlSegment<float>> vrls;
+  std::vector<float> u;
+  for (const Config<float>& c : pools.configs) {
+    vrls.push_back(c.query.vrl);
+    u.push_back(c.xi_vrl);
+  }
+  const size_t batches = vrls.size() / kVrlPointBatch;
+  CameraSamplers::WithEntry(method, [&](auto entry) {
+    GatherSample<float> out[kVrlPointBatch];
+    size_t b = 0;
+    for (auto _ : state) {
+      const size_t first = b * kVrlPointBatch;
+      const MediumGatherQuery<float>& q = pools.configs[first].query;
+      SampleSurfaceGathers<typename decltype(entry)::template Sampler<float>>(
+          ValidQuery{}, q.camera.origin, q.camera.dir, q.medium, &vrls[first], kVrlPointBatch, &u[first], out);
       benchmark::DoNotOptimize(out);
       b = b + 1 == batches ? 0 : b + 1;
     }
@@ -101,6 +129,10 @@ void RegisterGather() {
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("GatherBatch", std::string(method.name()).c_str(), g).c_str(),
                                    [method, g](benchmark::State& s) { GatherBatch(s, method, g); });
+  for (Method method : kMethods)
+    for (double g : kGatherG)
+      benchmark::RegisterBenchmark(BenchName("SurfaceGatherBatch", std::string(method.name()).c_str(), g).c_str(),
+                                   [method, g](benchmark::State& s) { SurfaceGatherBatch(s, method, g); });
   benchmark::RegisterBenchmark("GatherPart/validate", Validation);
   benchmark::RegisterBenchmark("GatherPart/step-one", StepOne);
   benchmark::RegisterBenchmark("GatherPart/integrand", Integrand);

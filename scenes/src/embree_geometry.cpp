@@ -142,6 +142,7 @@ void EmbreeGeometry::Commit() {
 }
 
 bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHit* hit) const {
+  if (Empty()) return false;  // a medium alone: no call into Embree per ray
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -171,6 +172,7 @@ bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHi
 }
 
 bool EmbreeGeometry::Occluded(Vec3f p0, Vec3f p1) const {
+  if (Empty()) return false;
   Vec3f d = p1 - p0;
   float len = vrli::Length(d);
   if (!(len > 2 * vrli::kRayEpsilon)) return false;
