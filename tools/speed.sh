@@ -90,16 +90,22 @@ for rep in $(seq "$reps"); do
   echo "   round $rep done"
 done
 
-echo "== vrlis_bench Gather/*, GatherPart/*, Fit/*, Camera/*: this tree only (the parts in one run)"
-"${pin[@]}" "$new/bench/vrlis_bench" --benchmark_filter='^Gather|^(Fit|Camera)/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
+echo "== vrlis_bench Gather/*, SurfaceGatherBatch/*, GatherPart/*, Fit/*, Camera/*: this tree only (the parts in one run)"
+"${pin[@]}" "$new/bench/vrlis_bench" --benchmark_filter='^(Surface)?Gather|^(Fit|Camera)/.*g:(-0.90|0.50|0.90)$' --benchmark_min_time=0.1 \
   --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/runs/parts.json" --benchmark_out_format=json >/dev/null
 if command -v perf >/dev/null; then
-  echo "== perf profile of vrl_render (bidirectional, novak, 1 thread)"
-  perf record -q -o "$out/runs/perf.data" "$new/examples/vrl_render" --scene bidirectional --sampler novak --threads 1 \
-    --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf" >/dev/null 2>&1 || true
-  perf report -q -i "$out/runs/perf.data" --no-children --sort symbol --stdio 2>/dev/null | grep -E '^ +[0-9]' |
-    sed -E 's/[ -]+$//' | head -15 >"$out/runs/perf.txt" || true
+  # bidirectional: medium-to-medium gathers only; cube: mostly medium-to-surface ones, and Embree.
+  for run in "bidirectional novak" "cube equiangular"; do
+    set -- $run
+    echo "== perf profile of vrl_render ($1, $2, 1 thread)"
+    perf record -q -o "$out/runs/perf_$1.data" "$new/examples/vrl_render" --scene "$1" --sampler "$2" --threads 1 \
+      --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf_$1" >/dev/null 2>&1 || true
+    { perf report -q -i "$out/runs/perf_$1.data" --no-children --sort dso --stdio 2>/dev/null | grep -E '^ +[0-9]' | head -4
+      echo
+      perf report -q -i "$out/runs/perf_$1.data" --no-children --sort symbol --stdio 2>/dev/null | grep -E '^ +[0-9]' |
+        grep -v ' 0x0' | head -12; } | sed -E 's/[ -]+$//' >"$out/runs/perf_$1.txt" || true
+  done
 fi
 
 echo "== vrlis_bench SceneCamera/*: the camera step on each scene's own queries (this tree)"
@@ -199,22 +205,26 @@ for scene in scenes:
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
          if b.get("aggregate_name") == "median"}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
-      "one VRL at a time; the last column: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
-      "the renderer's call)\n")
-print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest | batched gather |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+      "one VRL at a time; batched gather: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
+      "the renderer's call; batched surface gather: one of SampleSurfaceGathers, eight VRLs seen from one surface "
+      "point, the medium-to-surface gather, which makes most of the cube scene's gathers)\n")
+print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest | batched gather | batched surface gather |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
     for g in (-0.9, 0.5, 0.9):
         whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], parts[f"Camera/{c}/g:{g:.2f}"]
         v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
         batched = parts[f"GatherBatch/{c}/g:{g:.2f}"] / 8
-        print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} |")
-try:
-    prof = open(f"{out}/runs/perf.txt").read().rstrip()
-    print("\nProfile of `vrl_render --scene bidirectional --sampler novak --threads 1` (perf, self time, top symbols):\n")
+        surface = parts[f"SurfaceGatherBatch/{c}/g:{g:.2f}"] / 8
+        print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} | {surface:.0f} |")
+for scene, sampler in (("bidirectional", "novak"), ("cube", "equiangular")):
+    try:
+        prof = open(f"{out}/runs/perf_{scene}.txt").read().rstrip()
+    except OSError:
+        continue
+    print(f"\nProfile of `vrl_render --scene {scene} --sampler {sampler} --threads 1` (perf, self time: by library, "
+          "then the top symbols of known name):\n")
     print("```\n" + prof + "\n```")
-except OSError:
-    pass
 print("\nGeometric mean over g: " + ", ".join(f"{c} new / base {geo([t('new', c, g) / t('base', c, g) for g in gs]):.2f}" for c in cams))
 for c in ("CauchySum", "CauchyMixture"):
     print(f"{c} / Novak: base {geo([t('base', c, g) / t('base', 'Novak', g) for g in gs]):.2f}, "
