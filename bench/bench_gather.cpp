@@ -39,16 +39,25 @@ void Gather(benchmark::State& state, Method method, double g) {
   });
 }
 
-void GatherBatch(benchmark::State& state, Method method, double g) {
-  const Pools& pools = PoolsFor(g);
+// The pool's VRLs and random numbers as the arrays the batched gathers take.
+struct BatchInputs {
   std::vector<VrlSegment<float>> vrls;
   std::vector<float> u_vrl, u_camera;
+};
+BatchInputs BatchInputsOf(const Pools& pools) {
+  BatchInputs in;
   for (const Config<float>& c : pools.configs) {
-    vrls.push_back(c.query.vrl);
-    u_vrl.push_back(c.xi_vrl);
-    u_camera.push_back(c.xi_cam);
+    in.vrls.push_back(c.query.vrl);
+    in.u_vrl.push_back(c.xi_vrl);
+    in.u_camera.push_back(c.xi_cam);
   }
-  const size_t batches = vrls.size() / kVrlPointBatch;
+  return in;
+}
+
+void GatherBatch(benchmark::State& state, Method method, double g) {
+  const Pools& pools = PoolsFor(g);
+  const BatchInputs in = BatchInputsOf(pools);
+  const size_t batches = in.vrls.size() / kVrlPointBatch;
   WithGatherSamplers<float>(GatherMethod{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
     GatherSample<float> out[kVrlPointBatch];
     size_t b = 0;
@@ -56,7 +65,7 @@ void GatherBatch(benchmark::State& state, Method method, double g) {
       const size_t first = b * kVrlPointBatch;
       const MediumGatherQuery<float>& q = pools.configs[first].query;
       SampleMediumGathers<typename decltype(step_one)::type, typename decltype(step_two)::type>(
-          ValidQuery{}, q.camera, q.medium, &vrls[first], kVrlPointBatch, &u_vrl[first], &u_camera[first], out);
+          ValidQuery{}, q.camera, q.medium, &in.vrls[first], kVrlPointBatch, &in.u_vrl[first], &in.u_camera[first], out);
       benchmark::DoNotOptimize(out);
       b = b + 1 == batches ? 0 : b + 1;
     }
@@ -66,13 +75,8 @@ void GatherBatch(benchmark::State& state, Method method, double g) {
 
 void SurfaceGatherBatch(benchmark::State& state, Method method, double g) {
   const Pools& pools = PoolsFor(g);
-  std::vector<VrlSegment<float>> vrls;
-  std::vector<float> u;
-  for (const Config<float>& c : pools.configs) {
-    vrls.push_back(c.query.vrl);
-    u.push_back(c.xi_vrl);
-  }
-  const size_t batches = vrls.size() / kVrlPointBatch;
+  const BatchInputs in = BatchInputsOf(pools);
+  const size_t batches = in.vrls.size() / kVrlPointBatch;
   CameraSamplers::WithEntry(method, [&](auto entry) {
     GatherSample<float> out[kVrlPointBatch];
     size_t b = 0;
@@ -80,7 +84,7 @@ void SurfaceGatherBatch(benchmark::State& state, Method method, double g) {
       const size_t first = b * kVrlPointBatch;
       const MediumGatherQuery<float>& q = pools.configs[first].query;
       SampleSurfaceGathers<typename decltype(entry)::template Sampler<float>>(
-          ValidQuery{}, q.camera.origin, q.camera.dir, q.medium, &vrls[first], kVrlPointBatch, &u[first], out);
+          ValidQuery{}, q.camera.origin, q.camera.dir, q.medium, &in.vrls[first], kVrlPointBatch, &in.u_vrl[first], out);
       benchmark::DoNotOptimize(out);
       b = b + 1 == batches ? 0 : b + 1;
     }

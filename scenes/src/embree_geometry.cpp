@@ -134,7 +134,7 @@ void EmbreeGeometry::Commit() {
     rtcSetGeometryIntersectFunction(g, SphereIntersect);
     rtcSetGeometryOccludedFunction(g, SphereOccluded);
     rtcCommitGeometry(g);
-    sphere_geometry_ = rtcAttachGeometry(scene_, g);
+    rtcAttachGeometry(scene_, g);  // primitive i is spheres_[i]; Intersect tells it from the quads by geomID
     rtcReleaseGeometry(g);
   }
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);

@@ -40,7 +40,6 @@ class EmbreeGeometry : public vrli::Geometry {
   std::vector<int> quad_materials_;
   std::vector<Sphere> spheres_;
   unsigned quad_geometry_ = RTC_INVALID_GEOMETRY_ID;
-  unsigned sphere_geometry_ = RTC_INVALID_GEOMETRY_ID;  // one user geometry: primitive i is spheres_[i]
 };
 
 }  // namespace vrl_render
