@@ -217,6 +217,11 @@ for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "
         batched = parts[f"GatherBatch/{c}/g:{g:.2f}"] / 8
         surface = parts[f"SurfaceGatherBatch/{c}/g:{g:.2f}"] / 8
         print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} | {surface:.0f} |")
+# This table is one run of this tree, not interleaved with the baseline: a slow phase of a
+# shared machine inflates all of it. The same benchmark in both runs shows by how much.
+here, rounds = parts["Camera/Novak/g:0.50"], t("new", "Novak", 0.5)
+print(f"\nMachine phase: Camera/novak at g = 0.5 took {here:.0f} ns in this table's run and {rounds:.0f} ns in the "
+      f"interleaved rounds above ({here / rounds:.2f}x); this table's absolute times carry that factor.")
 for scene, sampler in (("bidirectional", "novak"), ("cube", "equiangular")):
     try:
         prof = open(f"{out}/runs/perf_{scene}.txt").read().rstrip()
@@ -239,7 +244,7 @@ if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
     echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`${VRLIS_SPEED_CXXFLAGS:+VRLIS_SPEED_CXXFLAGS=\"$VRLIS_SPEED_CXXFLAGS\" }tools/speed.sh\`"
     echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}${patched:+, its benchmarks patched to draw the queries of this tree (tools/speed_base_pool.patch)}; both builds ${VRLIS_SPEED_CXXFLAGS:+with $VRLIS_SPEED_CXXFLAGS, }Release;"
     echo "$reps interleaved rounds;${VRLIS_SPEED_PIN:+ single-threaded runs pinned to CPU $VRLIS_SPEED_PIN;} load average"
-    echo "at the end $(cut -d' ' -f1-3 /proc/loadavg): above the core count, the 2-thread columns measure the other load)."
+    echo "at the end $(cut -d' ' -f1-3 /proc/loadavg); the runs' own load is about 1, and a load above the core count would mean the 2-thread columns also measure other work)."
     echo
   }
   if [ -n "${VRLIS_SPEED_CXXFLAGS:-}" ]; then
