@@ -1,15 +1,14 @@
 #pragma once
-// The 2023 TU Wien thesis's solution 2 (docs/maths.md#cauchy-mixture): a mixture of the two Cauchys, each normalised over the interval
-// on its own; sampling picks a component, then inverts one arctangent.
-//
-// Weights (the thesis leaves them open): near the peak of lobe k the product is about
-// (lobe k) x (the other lobe's value there), so component k gets the weight
-// mass_k x other_lobe(peak_k clamped into the interval). This is the mixture that matches
-// the product at both peaks; equal weights would waste half the samples whenever one peak
-// dominates, and weights proportional to mass_k alone give back the Cauchy sum.
+// The Cauchy mixture of Oppitz's thesis (docs/maths.md#cauchy-mixture): the two Cauchys of
+// the thesis's fit, each truncated to the angle interval and normalised there on its own,
+// mixed with equal weights, as the thesis author's implementation does; sampling picks a
+// component, then inverts one arctangent. A lobe constant over the interval (exactly, as at
+// g = 0, or to rounding), which the fit leaves out, keeps its weight as a uniform component,
+// so g = 0 is equiangular sampling exactly.
 //
 // Because a component is chosen first, sample() is not the CDF's inverse: invert() returns
 // the mixture CDF, and invert(sample(U)) is uniform for uniform U but differs from U.
+#include <algorithm>
 #include <string_view>
 
 #include "../angle/segment_sampler.hpp"
@@ -23,14 +22,11 @@ class CauchyMixtureAngle {
   using Real = R;
   CauchyMixtureAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : CauchyMixtureAngle(PhaseProduct<Real>(q, dom)) {}
 
+  // Component k = floor(n u) takes the rest of n u, so one uniform number serves both choices.
   Real sample(Real u) const {
-    switch (fit_.count) {
-      case 0: return u * width_;
-      case 1: return fit_.lobe[0].inverse_primitive(u * fit_.lobe[0].mass());
-    }
-    if (u < weight0_ || weight0_ >= 1)
-      return fit_.lobe[0].inverse_primitive(std::min(u / weight0_, Real(1)) * fit_.lobe[0].mass());
-    return fit_.lobe[1].inverse_primitive(std::min((u - weight0_) / (1 - weight0_), Real(1)) * fit_.lobe[1].mass());
+    int k = std::min(int(u * components_), components_ - 1);
+    Real rest = std::min(u * components_ - k, Real(1));
+    return k < fit_.count ? fit_.lobe[k].inverse_primitive(rest * fit_.lobe[k].mass()) : rest * width_;
   }
 
   Real pdf(Real delta) const { return Mix(delta, &TruncatedCauchy<Real>::density, 1 / width_); }
@@ -40,32 +36,22 @@ class CauchyMixtureAngle {
     return {delta, pdf(delta)};
   }
   Real cdf(Real delta) const { return Mix(delta, &TruncatedCauchy<Real>::primitive, delta / width_); }
-  Real weight0() const { return weight0_; }
 
  private:
-  explicit CauchyMixtureAngle(const PhaseProduct<Real>& target) : fit_(target), width_(target.width()) {
-    if (fit_.count < 2) return;
-    Real w[2];
-    for (int k = 0; k < 2; ++k) {
-      Real at = Clamp(fit_.lobe[k].location(), Real(0), width_);
-      w[k] = fit_.lobe[k].mass() * (fit_.from_segment[k] ? target.point_lobe(at) : target.segment_lobe(at));
-    }
-    weight0_ = w[0] + w[1] > 0 ? w[0] / (w[0] + w[1]) : Real(0.5);
-  }
+  explicit CauchyMixtureAngle(const PhaseProduct<Real>& target)
+      : fit_(target), width_(target.width()), components_(target.point_kind() == LobeKind::None ? 1 : 2) {}
 
-  // sum_k weight_k f_k(delta) / mass_k for f the density or the primitive.
+  // The mean over the components of f_k(delta) / mass_k, for f the density or the
+  // primitive; a lobe the fit left out (constant over the interval) is the uniform component.
   Real Mix(Real delta, Real (TruncatedCauchy<Real>::*f)(Real) const, Real uniform) const {
-    if (fit_.count == 0) return uniform;
-    const TruncatedCauchy<Real>& c0 = fit_.lobe[0];
-    Real first = (c0.*f)(delta) / c0.mass();
-    if (fit_.count == 1) return first;
-    const TruncatedCauchy<Real>& c1 = fit_.lobe[1];
-    return weight0_ * first + (1 - weight0_) * (c1.*f)(delta) / c1.mass();
+    Real sum = Real(components_ - fit_.count) * uniform;
+    for (int k = 0; k < fit_.count; ++k) sum += (fit_.lobe[k].*f)(delta) / fit_.lobe[k].mass();
+    return sum / Real(components_);
   }
 
   CauchyLobes<Real> fit_;
   Real width_;
-  Real weight0_ = 1;
+  int components_;  // one per phase lobe of the query: 2, or 1 for a point light
 };
 
 template <typename Real = float>
