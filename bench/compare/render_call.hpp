@@ -12,43 +12,40 @@
 #include <vrlis_integration/gather.hpp>
 #include <vrlis_integration/renderer.hpp>
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
-// A sampler here is a whole gather method: camera sampler and step one (docs/maths.md).
-using Sampler = vrlis::GatherMethod;
-
-inline std::string SamplerName(Sampler s) { return vrlis::Name(s); }
-inline std::optional<Sampler> ParseSampler(const std::string& name) { return vrlis::ParseGatherMethod(name); }
+inline std::string SamplerName(GatherSamplers s) { return vrlis::Name(s); }
+inline std::optional<GatherSamplers> ParseSampler(const std::string& name) { return vrlis::ParseGatherSamplers(name); }
 // The default study: every camera sampler with Novák's step one.
-inline std::vector<Sampler> AllSamplers() {
-  std::vector<Sampler> all;
-  for (vrlis::Method m : vrlis::kMethods) all.push_back({m, {}});
+inline std::vector<GatherSamplers> AllSamplers() {
+  std::vector<GatherSamplers> all;
+  for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) all.push_back({m, {}});
   return all;
 }
-inline const Sampler kBaseline = *vrlis::ParseGatherMethod("novak");  // every ratio is to Novák's sampler
+inline const GatherSamplers kBaseline = *vrlis::ParseGatherSamplers("novak");  // every ratio is to Novák's sampler
 
 // One VRL renderer of a scene; Render times a pass with the given camera sampler.
 class PassRenderer {
  public:
-  PassRenderer(const vrli::Scene& scene, const vrli::RenderSettings& settings) : scene_(scene), settings_(settings) {}
-  vrli::Film Render(Sampler sampler, std::uint64_t seed, std::uint64_t pass, double* seconds) {
-    vrli::RenderSettings settings = settings_;
+  PassRenderer(const vrlis::integration::Scene& scene, const vrlis::integration::RenderSettings& settings) : scene_(scene), settings_(settings) {}
+  vrlis::integration::Film Render(GatherSamplers sampler, std::uint64_t seed, std::uint64_t pass, double* seconds) {
+    vrlis::integration::RenderSettings settings = settings_;
     settings.transport.sampling = sampler;
-    vrli::VrlRenderer renderer(scene_, settings);
+    vrlis::integration::VrlRenderer renderer(scene_, settings);
     auto start = std::chrono::steady_clock::now();
-    vrli::Film film = renderer.RenderPass(seed, pass, nullptr);
+    vrlis::integration::Film film = renderer.RenderPass(seed, pass, nullptr);
     *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return film;
   }
 
  private:
-  const vrli::Scene& scene_;
-  vrli::RenderSettings settings_;
+  const vrlis::integration::Scene& scene_;
+  vrlis::integration::RenderSettings settings_;
 };
 
-inline vrli::Spectrum GatherWith(Sampler sampler, const vrli::Scene& scene, const vrli::CameraSegment& seg,
-                                 const vrli::Vrl& vrl, vrli::Rng& rng) {
-  return vrli::GatherMediumToMedium(sampler, scene, seg, vrl, rng);
+inline vrlis::integration::Spectrum GatherWith(GatherSamplers sampler, const vrlis::integration::Scene& scene, const vrlis::integration::CameraSegment& seg,
+                                 const vrlis::integration::Vrl& vrl, vrlis::integration::Rng& rng) {
+  return vrlis::integration::GatherMediumToMedium(sampler, scene, seg, vrl, rng);
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare
