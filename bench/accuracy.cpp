@@ -166,7 +166,7 @@ constexpr struct {
               {"whole", "whole", &Result::whole},
               {"whole_marginal", "wholM", &Result::whole_marginal}};
 
-std::string SamplerName(int k) { return std::string(vrlis::Name(vrlis::kMethods[std::size_t(k)])); }
+std::string SamplerName(int k) { return std::string(vrlis::Name(vrlis::kSegmentSamplers[std::size_t(k)])); }
 
 void PrintHeader(bool weighted) {
   std::printf("%-6s %-5s", "g", "step");
@@ -272,7 +272,7 @@ int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSet
   out["inner_tol"] = settings.inner_tol;
   out["outer_tol"] = settings.outer_tol;
   out["medium"] = kSyntheticDescription;
-  for (auto m : vrlis::kMethods) out["samplers"].push_back(vrlis::Name(m));
+  for (auto m : vrlis::kSegmentSamplers) out["samplers"].push_back(vrlis::Name(m));
   out["results"] = Json::array();
   std::vector<std::vector<Result>> results;
   for (double g : kStudyG) results.push_back(EvaluateAll(MakeConfigs(seed, pairs, g), settings, threads));
@@ -307,13 +307,13 @@ int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSet
 int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads, const QuadratureSettings& settings,
                const std::string& json_path) {
   std::string error;
-  auto records = vrli::ReadQueryLog(path, &error);
+  auto records = vrlis::integration::ReadQueryLog(path, &error);
   if (!records) Fail(error);
   if (records->empty()) Fail("'" + path + "' holds no queries");
   // The camera step's fixed VRL point: a seeded uniform per query.
   Rng rng(seed);
   std::vector<Config<double>> configs;
-  for (const vrli::QueryRecord& r : *records) {
+  for (const vrlis::integration::QueryRecord& r : *records) {
     Config<float> c{r.query, 0.5f, 0.5f};
     configs.push_back(c.as<double>());
     configs.back().xi_vrl = rng.uniform();
@@ -349,7 +349,7 @@ int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads
   out["inner_tol"] = settings.inner_tol;
   out["outer_tol"] = settings.outer_tol;
   out["g"] = g;
-  for (auto m : vrlis::kMethods) out["samplers"].push_back(vrlis::Name(m));
+  for (auto m : vrlis::kSegmentSamplers) out["samplers"].push_back(vrlis::Name(m));
   out["seconds"] = seconds;
   // Effective number of queries under the image's weights (Kish): how many carry the image.
   out["effective_queries"] = total * total / sum2;
@@ -406,19 +406,19 @@ int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads
 
 int RunLargestWeights(const std::string& path, int grid, int threads, const std::string& json_path) {
   std::string error;
-  auto records = vrli::ReadQueryLog(path, &error);
+  auto records = vrlis::integration::ReadQueryLog(path, &error);
   if (!records) Fail(error);
   if (records->empty()) Fail("'" + path + "' holds no queries");
-  std::vector<vrlis::GatherMethod> methods;
-  for (auto vrl : vrlis::kStepOnes)
-    for (auto camera : vrlis::kMethods) methods.push_back({camera, vrl});
+  std::vector<vrlis::GatherSamplers> methods;
+  for (auto vrl : vrlis::kVrlSamplers)
+    for (auto camera : vrlis::kSegmentSamplers) methods.push_back({camera, vrl});
   // Per query and method: the largest weight and the sum of weights over the grid.
   std::vector<std::vector<double>> largest(records->size()), sum(records->size());
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i; (i = next++) < records->size();) {
       vrlis::MediumGatherQuery<double> q = Config<float>{(*records)[i].query, 0.5f, 0.5f}.as<double>().query;
-      for (vrlis::GatherMethod m : methods) {
+      for (vrlis::GatherSamplers m : methods) {
         double worst = 0, total = 0;
         for (int a = 0; a < grid; ++a)
           for (int b = 0; b < grid; ++b) {

@@ -58,9 +58,9 @@ inline std::string BenchName(const char* kind, std::string_view sampler, double 
 }
 
 // Registers kind/<method>/g:<g> for every camera sampler of the library's registry
-// (vrlis::CameraSamplers, with its names) and every g of the study; run(tag, state, g)
+// (vrlis::SegmentSamplers, with its names) and every g of the study; run(tag, state, g)
 // times the sampler type decltype(tag)::type, so that each sampler is built at its own call
-// site (CameraSamplers::With would put all five in one function, and the compiler then
+// site (SegmentSamplers::With would put all five in one function, and the compiler then
 // stops inlining the fits: measured 1.3-1.7x slower).
 template <typename Run, typename... Entries>
 void RegisterPerSampler(const char* kind, Run run, Registry<Entries...>*) {
@@ -73,7 +73,7 @@ void RegisterPerSampler(const char* kind, Run run, Registry<Entries...>*) {
 }
 template <typename Run>
 void RegisterPerSampler(const char* kind, Run run) {
-  RegisterPerSampler(kind, run, static_cast<CameraSamplers*>(nullptr));
+  RegisterPerSampler(kind, run, static_cast<SegmentSamplers*>(nullptr));
 }
 
 // RegisterPerSampler with the timed loop over the pool of g: kind/<method>/g:<g> runs

@@ -8,7 +8,7 @@
 namespace vrlis::bench {
 namespace {
 
-void Estimator(benchmark::State& state, GatherMethod method, double g) {
+void Estimator(benchmark::State& state, GatherSamplers method, double g) {
   const Pools& pools = PoolsFor(g);
   OverPool(state, [&](size_t i) {
     const Config<float>& c = pools.configs[i];
@@ -22,7 +22,7 @@ void Estimator(benchmark::State& state, GatherMethod method, double g) {
 void RegisterEstimator() {
   for (auto [kind, step_one] : {std::pair{"Estimator", VrlSamplers::Of<VrlPointEntry>()},
                                 std::pair{"EstimatorMarginal", VrlSamplers::Of<VrlMarginalEntry>()}})
-    for (Method m : kMethods)
+    for (SegmentChoice m : kSegmentSamplers)
       for (double g : kStudyG)
         benchmark::RegisterBenchmark(BenchName(kind, Name(m), g).c_str(),
                                      [m, step_one = step_one, g](benchmark::State& s) { Estimator(s, {m, step_one}, g); });

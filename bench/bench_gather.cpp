@@ -30,9 +30,9 @@ inline constexpr double kGatherG[] = {-0.9, 0.5, 0.9};
 
 const MediumGatherQuery<float>& GatherQuery(const Config<float>& c) { return c.query; }
 
-void Gather(benchmark::State& state, Method method, double g) {
+void Gather(benchmark::State& state, SegmentChoice method, double g) {
   const Pools& pools = PoolsFor(g);
-  GatherMethod m{method, VrlSamplers::Of<VrlPointEntry>()};
+  GatherSamplers m{method, VrlSamplers::Of<VrlPointEntry>()};
   OverPool(state, [&](size_t i) {
     GatherSample<float> s = SampleMediumGather(m, pools.configs[i].query, pools.configs[i].xi_vrl, pools.configs[i].xi_cam);
     benchmark::DoNotOptimize(s);
@@ -54,11 +54,11 @@ BatchInputs BatchInputsOf(const Pools& pools) {
   return in;
 }
 
-void GatherBatch(benchmark::State& state, Method method, double g) {
+void GatherBatch(benchmark::State& state, SegmentChoice method, double g) {
   const Pools& pools = PoolsFor(g);
   const BatchInputs in = BatchInputsOf(pools);
   const size_t batches = in.vrls.size() / kVrlPointBatch;
-  WithGatherSamplers<float>(GatherMethod{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
+  WithGatherSamplers<float>(GatherSamplers{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
     GatherSample<float> out[kVrlPointBatch];
     size_t b = 0;
     for (auto _ : state) {
@@ -73,11 +73,11 @@ void GatherBatch(benchmark::State& state, Method method, double g) {
   state.SetItemsProcessed(state.iterations() * kVrlPointBatch);
 }
 
-void SurfaceGatherBatch(benchmark::State& state, Method method, double g) {
+void SurfaceGatherBatch(benchmark::State& state, SegmentChoice method, double g) {
   const Pools& pools = PoolsFor(g);
   const BatchInputs in = BatchInputsOf(pools);
   const size_t batches = in.vrls.size() / kVrlPointBatch;
-  CameraSamplers::WithEntry(method, [&](auto entry) {
+  SegmentSamplers::WithEntry(method, [&](auto entry) {
     GatherSample<float> out[kVrlPointBatch];
     size_t b = 0;
     for (auto _ : state) {
@@ -125,15 +125,15 @@ void Integrand(benchmark::State& state) {
 }  // namespace
 
 void RegisterGather() {
-  for (Method method : kMethods)
+  for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("Gather", std::string(method.name()).c_str(), g).c_str(),
                                    [method, g](benchmark::State& s) { Gather(s, method, g); });
-  for (Method method : kMethods)
+  for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("GatherBatch", std::string(method.name()).c_str(), g).c_str(),
                                    [method, g](benchmark::State& s) { GatherBatch(s, method, g); });
-  for (Method method : kMethods)
+  for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("SurfaceGatherBatch", std::string(method.name()).c_str(), g).c_str(),
                                    [method, g](benchmark::State& s) { SurfaceGatherBatch(s, method, g); });

@@ -16,7 +16,7 @@
 //
 // Every benchmark cycles in order through a pool of 1024 random configurations (those of
 // the accuracy study, seeded), so that no single warm branch is timed. Float throughout;
-// samplers are chosen through the library's registry (CameraSamplers::With: one predictable
+// samplers are chosen through the library's registry (SegmentSamplers::With: one predictable
 // branch, the concrete type inside). One iteration is one sample.
 // Standard flags apply: --benchmark_filter=Novak, --benchmark_format=json, ...
 #include <map>

@@ -18,10 +18,10 @@ struct ScenePool {
   std::vector<float> xi;
 };
 
-ScenePool MakeScenePool(const std::vector<vrli::QueryRecord>& records) {
+ScenePool MakeScenePool(const std::vector<vrlis::integration::QueryRecord>& records) {
   ScenePool pool;
   double xi = 0.5;
-  for (const vrli::QueryRecord& r : records) {
+  for (const vrlis::integration::QueryRecord& r : records) {
     if (Validate(r.query) != QueryError::None) continue;
     xi = xi + 0.6180339887498949 - (xi + 0.6180339887498949 >= 1 ? 1 : 0);
     VrlPoint<float> vp(r.query);
@@ -55,14 +55,14 @@ void RegisterEach(const ScenePool& pool, Registry<Entries...>*) {
 }  // namespace
 
 bool RegisterSceneCamera(const std::string& path, std::string* error) {
-  std::optional<std::vector<vrli::QueryRecord>> records = vrli::ReadQueryLog(path, error);
+  std::optional<std::vector<vrlis::integration::QueryRecord>> records = vrlis::integration::ReadQueryLog(path, error);
   if (!records) return false;
   static const ScenePool pool = MakeScenePool(*records);
   if (pool.camera.empty()) {
     *error = "'" + path + "' holds no valid query";
     return false;
   }
-  RegisterEach(pool, static_cast<CameraSamplers*>(nullptr));
+  RegisterEach(pool, static_cast<SegmentSamplers*>(nullptr));
   return true;
 }
 

@@ -32,15 +32,15 @@ int Fail(const std::string& message) {
 
 std::string JoinNames() {
   std::string s;
-  for (auto n : vrl_render::kSceneNames) s += (s.empty() ? "" : ", ") + std::string(n);
+  for (auto n : vrlis::scenes::kSceneNames) s += (s.empty() ? "" : ", ") + std::string(n);
   return s;
 }
 
 std::string SamplerNames() {
   std::string s;
-  for (auto m : vrlis::kMethods) s += (s.empty() ? "" : ", ") + std::string(vrlis::Name(m));
+  for (auto m : vrlis::kSegmentSamplers) s += (s.empty() ? "" : ", ") + std::string(vrlis::Name(m));
   s += ", each optionally followed by";
-  for (auto m : vrlis::kStepOnes) s += " +" + std::string(vrlis::Name(m));
+  for (auto m : vrlis::kVrlSamplers) s += " +" + std::string(vrlis::Name(m));
   return s;
 }
 
@@ -79,10 +79,10 @@ std::string ExrPath(const std::string& out) {
   return out + ".exr";
 }
 
-double Rmse(const vrli::Film& a, const vrli::Film& b) {
+double Rmse(const vrlis::integration::Film& a, const vrlis::integration::Film& b) {
   double sum = 0;
   for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-    const vrli::Spectrum &p = a.pixels[i], &q = b.pixels[i];
+    const vrlis::integration::Spectrum &p = a.pixels[i], &q = b.pixels[i];
     sum += (double(p.r) - q.r) * (double(p.r) - q.r) + (double(p.g) - q.g) * (double(p.g) - q.g) +
            (double(p.b) - q.b) * (double(p.b) - q.b);
   }
@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
   }
 
   // Validate everything before any work or output.
-  auto method = vrlis::ParseGatherMethod(sampler);
+  auto method = vrlis::ParseGatherSamplers(sampler);
   if (!method) return Fail("unknown sampler '" + sampler + "' (expected " + SamplerNames() + ")");
   if (integrator != "vrl" && integrator != "path") return Fail("unknown integrator '" + integrator + "' (expected vrl or path)");
   if (gather != "all" && gather != "m2m" && gather != "m2s") return Fail("unknown gather '" + gather + "' (expected all, m2m or m2s)");
@@ -159,16 +159,16 @@ int main(int argc, char** argv) {
   if (threads < 0) return Fail("--threads must be >= 0");
   if (dump_every < 1) return Fail("--dump-every must be positive");
   if (!dump_queries.empty() && integrator != "vrl") return Fail("--dump-queries needs --integrator vrl");
-  if (!dump_queries.empty() && !vrl_render::CanWrite(dump_queries)) return Fail("cannot write output file '" + dump_queries + "'");
+  if (!dump_queries.empty() && !vrlis::scenes::CanWrite(dump_queries)) return Fail("cannot write output file '" + dump_queries + "'");
   if (exposure && !(*exposure > 0 && std::isfinite(*exposure))) return Fail("--exposure must be positive");
-  auto built = vrl_render::BuildScene(scene_name, {g, sigma_s, sigma_a});
+  auto built = vrlis::scenes::BuildScene(scene_name, {g, sigma_s, sigma_a});
   if (!built) return Fail("unknown scene '" + scene_name + "' (expected " + JoinNames() + ")");
   if (gather == "m2s" && !built->has_surfaces)
     return Fail("--gather m2s: scene '" + scene_name + "' has no surfaces to gather at (use m2m or all)");
-  std::optional<vrli::Film> ref;
+  std::optional<vrlis::integration::Film> ref;
   if (!reference.empty()) {
     std::string err;
-    ref = vrl_render::ReadExr(reference, &err);
+    ref = vrlis::scenes::ReadExr(reference, &err);
     if (!ref) return Fail("cannot read reference '" + reference + "': " + err);
     if (ref->width != width || ref->height != height) return Fail("reference '" + reference + "' is not " + std::to_string(width) + "x" + std::to_string(height));
   }
@@ -177,9 +177,9 @@ int main(int argc, char** argv) {
   out = exr;
   const std::string stem = out.substr(0, out.size() - 4), png = stem + ".png", json_path = stem + ".json";
   for (const std::string& p : {out, png, json_path})
-    if (!vrl_render::CanWrite(p)) return Fail("cannot write output file '" + p + "'");
+    if (!vrlis::scenes::CanWrite(p)) return Fail("cannot write output file '" + p + "'");
 
-  vrli::RenderSettings settings;
+  vrlis::integration::RenderSettings settings;
   settings.width = width;
   settings.height = height;
   settings.vrls_per_pass = vrls;
@@ -194,19 +194,19 @@ int main(int argc, char** argv) {
     settings.transport.medium_to_surface = gather == "m2s";
     settings.transport.direct = settings.transport.indirect = false;
   }
-  vrli::QueryLog query_log(dump_every);
+  vrlis::integration::QueryLog query_log(dump_every);
   if (!dump_queries.empty()) settings.transport.query_log = &query_log;
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(workers));
-  std::unique_ptr<vrli::Renderer> renderer;
+  std::unique_ptr<vrlis::integration::Renderer> renderer;
   if (integrator == "vrl")
-    renderer = std::make_unique<vrli::VrlRenderer>(built->scene, settings);
+    renderer = std::make_unique<vrlis::integration::VrlRenderer>(built->scene, settings);
   else
-    renderer = std::make_unique<vrli::PathTracingRenderer>(built->scene, settings);
+    renderer = std::make_unique<vrlis::integration::PathTracingRenderer>(built->scene, settings);
 
   const bool bar = !quiet && isatty(STDERR_FILENO);
   const bool timed = app.count("--time") > 0;
-  vrli::Accumulator acc(width, height);
+  vrlis::integration::Accumulator acc(width, height);
   std::uint64_t vrl_count = 0, gathers = 0;
   double pass_seconds = 0;
   auto t0 = std::chrono::steady_clock::now();
@@ -228,7 +228,7 @@ int main(int argc, char** argv) {
     });
   for (int pass = 0;; ++pass) {
     if (timed ? (pass > 0 && elapsed() >= seconds) : pass >= spp) break;
-    vrli::PassStats stats;
+    vrlis::integration::PassStats stats;
     rows_done.store(0);
     acc.Add(renderer->RenderPass(seed, static_cast<std::uint64_t>(pass), &stats));
     passes_done.store(pass + 1);
@@ -239,7 +239,7 @@ int main(int argc, char** argv) {
   finished.store(true);
   if (progress.joinable()) progress.join();
   const double wall = elapsed();
-  vrli::Film image = acc.Mean();
+  vrlis::integration::Film image = acc.Mean();
 
   nlohmann::json summary = {
       {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather},
@@ -252,16 +252,16 @@ int main(int argc, char** argv) {
   if (ref) summary["rmse"] = Rmse(image, *ref);
   std::string err;
   if (!dump_queries.empty()) {
-    std::vector<vrli::QueryRecord> records = query_log.Records();
+    std::vector<vrlis::integration::QueryRecord> records = query_log.Records();
     summary["dumped_queries"] = records.size();
-    if (!vrli::WriteQueryLog(dump_queries, records, &err)) {
+    if (!vrlis::integration::WriteQueryLog(dump_queries, records, &err)) {
       std::fprintf(stderr, "vrl_render: error: %s\n", err.c_str());
       return 1;
     }
   }
-  if (!vrl_render::WriteExr(out, image, &err) ||
-      !vrl_render::WritePng(png, image, exposure ? *exposure : vrl_render::AutoExposure(image), &err) ||
-      !vrl_render::WriteText(json_path, summary.dump(2) + "\n", &err)) {
+  if (!vrlis::scenes::WriteExr(out, image, &err) ||
+      !vrlis::scenes::WritePng(png, image, exposure ? *exposure : vrlis::scenes::AutoExposure(image), &err) ||
+      !vrlis::scenes::WriteText(json_path, summary.dump(2) + "\n", &err)) {
     std::fprintf(stderr, "vrl_render: error: %s\n", err.c_str());
     return 1;
   }

@@ -12,8 +12,8 @@
 #include <cstring>
 #include <limits>
 
-#include "../tests/lib/sampler_types.hpp"
-#include "../tests/stability/contract.hpp"
+#include "sampler_types.hpp"
+#include "contract.hpp"
 
 namespace {
 
@@ -110,17 +110,17 @@ void Run(Bytes& b, int mode, int lobe) {
 
   // Every camera sampler of the library's registry.
   std::string msg;
-  vrlis_test::ForEachCameraSampler<Real>([&](auto tag) {
+  vrlis::test::ForEachCameraSampler<Real>([&](auto tag) {
     using S = typename decltype(tag)::type;
-    msg = vrlis_stab::CheckSegmentSampler(S(q), q, us, n, vrlis_test::RoundTripsPointwise<S>());
-    if (!msg.empty()) Fail(vrlis_test::SamplerName<S>().c_str(), msg, q);
+    msg = vrlis::stability::CheckSegmentSampler(S(q), q, us, n, vrlis::test::RoundTripsPointwise<S>());
+    if (!msg.empty()) Fail(vrlis::test::SamplerName<S>().c_str(), msg, q);
   });
 
   // VrlPoint: the segment as the VRL, the point and lobe axis as the camera line.
   vrlis::VrlPointQuery<Real> v{q.origin, q.dir, q.tmin, q.tmax, q.point, q.lobe.axis};
   if (mode >= 2 && (b.Byte() & 1)) v.line_dir = q.dir;  // parallel lines
   vrlis::VrlPoint<Real> vp(v);
-  if (!(msg = vrlis_stab::CheckVrlPoint(vp, v, us, n)).empty()) {
+  if (!(msg = vrlis::stability::CheckVrlPoint(vp, v, us, n)).empty()) {
     std::fprintf(stderr,
                  "CONTRACT VIOLATION (VrlPoint, %s): %s\n  origin (%.9g, %.9g, %.9g) dir (%.9g, %.9g, %.9g) t [%.9g, %.9g]\n"
                  "  line origin (%.9g, %.9g, %.9g) line dir (%.9g, %.9g, %.9g)\n",

@@ -7,19 +7,18 @@
 # and copies the dumps to docs/accuracy_scenes/ (per-run JSON and tables stay in <outdir>).
 #
 #   tools/accuracy_scenes.sh [outdir=out/accuracy_scenes]
-# Environment: VRLIS_SCENES_BUILD (build dir, default build-scenes), VRLIS_SCENE_QUERIES
+# Environment: VRLIS_SCENE_QUERIES
 # (1000), VRLIS_SCENE_G ("-0.9 0.5 0.9"), VRLIS_SCENES_NO_DOCS=1 (leave docs/ alone).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/accuracy_scenes}
-build=${VRLIS_SCENES_BUILD:-build-scenes}
+build=build
 queries=${VRLIS_SCENE_QUERIES:-1000}
 gs=${VRLIS_SCENE_G:-"-0.9 0.5 0.9"}
 start=$(date +%s)
 
-tools/deps.sh
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_WERROR=ON -DVRLIS_BUILD_TESTS=OFF >/dev/null
-cmake --build "$build" --target vrl_render vrlis_accuracy
+source tools/lib.sh
+build_preset release vrl_render vrlis_accuracy
 render="$build/examples/vrl_render"
 accuracy="$build/bench/vrlis_accuracy"
 mkdir -p "$out"

@@ -21,10 +21,9 @@ reps=${VRLIS_BENCH_REPS:-5}
 min_time=${VRLIS_BENCH_MIN_TIME:-0.1}
 pairs=${VRLIS_ACCURACY_PAIRS:-256}
 
-tools/deps.sh
 if [ -z "${VRLIS_BENCH_BUILD:-}" ]; then  # (the CMake `bench` target passes its own, configured build)
-  cmake --preset release >/dev/null
-  cmake --build --preset release --target vrlis_bench vrlis_accuracy
+  source tools/lib.sh
+  build_preset release vrlis_bench vrlis_accuracy
 fi
 mkdir -p "$out"
 

@@ -9,6 +9,6 @@ cd "$(dirname "$0")/.."
 source tools/lib.sh
 prepare_vrl_compare "$@"
 out=out/compare
-build/compare/vrl_compare --decompose --out "$out" "${args[@]}" >/dev/null
-/usr/bin/python3 compare/plot.py "$out" --decompose ${publish:+--publish "$publish"} --command "tools/decompose.sh${*:+ $*}"
+build/bench/compare/vrl_compare --decompose --out "$out" "${args[@]}" >/dev/null
+/usr/bin/python3 bench/compare/plot.py "$out" --decompose ${publish:+--publish "$publish"} --command "tools/decompose.sh${*:+ $*}"
 echo "page and charts: $out/decompose/decomposition.md"

@@ -11,8 +11,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"; shift || true
 out=build-fuzz
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz
+source tools/lib.sh
+build_preset fuzz >/dev/null
 mkdir -p "$out/corpus" "$out/artifacts"
 bin="$out/fuzz/fuzz_samplers"
 if [ "$seconds" = regressions ]; then

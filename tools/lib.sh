@@ -1,6 +1,18 @@
-# Sourced by tools/main.sh and tools/decompose.sh, which start alike: split --publish from
-# the arguments meant for vrl_compare, install what is missing, build vrl_compare.
-# Sets `publish` (docs/compare with --publish, else empty) and `args` (every other argument).
+# Sourced by the tools that build before they run: the one "install, configure, build".
+# build_preset PRESET [TARGET...]: installs what is missing (tools/deps.sh), configures the
+# CMake preset (build/ is always the `release` preset's: Release, warnings as errors) and
+# builds the targets (everything when none is given).
+build_preset() {
+  local preset=$1
+  shift
+  tools/deps.sh
+  cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" -j "$(nproc)" ${1:+--target "$@"}
+}
+
+# For tools/main.sh and tools/decompose.sh: splits --publish from the arguments meant for
+# vrl_compare and builds vrl_compare. Sets `publish` (docs/compare with --publish, else
+# empty) and `args` (every other argument).
 prepare_vrl_compare() {
   publish=""
   args=()
@@ -8,7 +20,5 @@ prepare_vrl_compare() {
   for a in "$@"; do
     if [ "$a" = "--publish" ]; then publish="docs/compare"; else args+=("$a"); fi
   done
-  tools/deps.sh
-  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build build --target vrl_compare -j "$(nproc)"
+  build_preset release vrl_compare
 }

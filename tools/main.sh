@@ -6,12 +6,12 @@
 #   tools/main.sh            the default study
 #   tools/main.sh --full     every scene, g in {-0.9, -0.5, 0, 0.5, 0.9}, 12 s per sampler (~30 min)
 #   tools/main.sh --publish  also write docs/compare/results.md, its charts and the README table
-# Other arguments go to vrl_compare (see build/compare/vrl_compare --help), e.g. --seed 2.
+# Other arguments go to vrl_compare (see build/bench/compare/vrl_compare --help), e.g. --seed 2.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/lib.sh
 prepare_vrl_compare "$@"
 out=out/compare
-build/compare/vrl_compare --out "$out" "${args[@]}"
-/usr/bin/python3 compare/plot.py "$out" ${publish:+--publish "$publish"} --command "tools/main.sh${*:+ $*}"
+build/bench/compare/vrl_compare --out "$out" "${args[@]}"
+/usr/bin/python3 bench/compare/plot.py "$out" ${publish:+--publish "$publish"} --command "tools/main.sh${*:+ $*}"
 echo "efficiency chart: $out/efficiency.png; images: $out/<scene>_g<g>/"

@@ -6,9 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_SCENE=${1:-30}
 SIZE=${2:-256}
-tools/deps.sh
-cmake --preset release >/dev/null
-cmake --build --preset release --target vrl_render >/dev/null
+source tools/lib.sh
+build_preset release vrl_render >/dev/null
 BIN=build/examples/vrl_render
 OUT=docs/scenes
 mkdir -p "$OUT"

@@ -1,6 +1,6 @@
 """The camera samplers as the charts and tables show them, keyed by the library's registry
 names (vrlis::CameraSamplers in include/vrlis/method.hpp, which vrlis_bench, vrlis_accuracy
-and vrl_compare print). Shared by bench/plot.py, bench/accuracy_scenes.py and compare/plot.py:
+and vrl_compare print). Shared by bench/plot.py, bench/accuracy_scenes.py and bench/compare/plot.py:
 a sampler's label is derived from its name, so the registry stays the one name table.
 """
 

@@ -6,6 +6,6 @@
 # Usage: tools/sanitize.sh [ctest arguments...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake --preset sanitize
-cmake --build --preset sanitize -j "$(nproc)"
+source tools/lib.sh
+build_preset sanitize
 ctest --preset sanitize -j "$(nproc)" "$@"

@@ -8,9 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 samples="${1:-100000}"
-tools/deps.sh
-cmake --preset release >/dev/null
-cmake --build --preset release --target vrlis_stability vrlis_accuracy >/dev/null
+source tools/lib.sh
+build_preset release vrlis_stability vrlis_accuracy >/dev/null
 tool=build/tests/stability/vrlis_stability
 accuracy=build/bench/vrlis_accuracy
 grid=32

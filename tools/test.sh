@@ -3,7 +3,6 @@
 # errors) and runs the whole test suite with ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/deps.sh
-cmake --preset release
-cmake --build --preset release -j "$(nproc)"
+source tools/lib.sh
+build_preset release
 ctest --preset release -j "$(nproc)" "$@"

@@ -22,7 +22,7 @@ fi
   for seed in 1 2; do
     [ ! -f "out/compare_seed$seed/seconds.txt" ] || printf "Seed %s took %s s (build included).\n\n" "$seed" "$(cat "out/compare_seed$seed/seconds.txt")"
   done
-  /usr/bin/python3 compare/two_runs.py out/compare_seed1 out/compare_seed2
+  /usr/bin/python3 bench/compare/two_runs.py out/compare_seed1 out/compare_seed2
 } >docs/compare/two_runs.md.new
 mv docs/compare/two_runs.md.new docs/compare/two_runs.md
 echo "wrote docs/compare/two_runs.md"

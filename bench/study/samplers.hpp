@@ -1,7 +1,7 @@
 #pragma once
-// The camera samplers of the library's registry (vrlis::CameraSamplers), all fitted to one
+// The camera samplers of the library's registry (vrlis::SegmentSamplers), all fitted to one
 // query at once: the quadrature evaluates every sampler's density at each of its points,
-// sharing the integrand. Order and names are the registry's (vrlis::kMethods, Name).
+// sharing the integrand. Order and names are the registry's (vrlis::kSegmentSamplers, Name).
 #include <tuple>
 
 #include "config.hpp"
@@ -17,10 +17,10 @@ std::tuple<typename Entries::template Sampler<Real>...> FitEach(const SegmentQue
 
 template <typename Real>
 auto FitCameraSamplers(const SegmentQuery<Real>& q) {
-  return detail::FitEach(q, static_cast<CameraSamplers*>(nullptr));
+  return detail::FitEach(q, static_cast<SegmentSamplers*>(nullptr));
 }
 template <typename Real>
 using CameraSamplerTuple = decltype(FitCameraSamplers(SegmentQuery<Real>{}));
-inline constexpr int kCameraSamplerCount = int(CameraSamplers::kCount);
+inline constexpr int kCameraSamplerCount = int(SegmentSamplers::kCount);
 
 }  // namespace vrlis::study

@@ -10,9 +10,6 @@ namespace vrlis {
 template <typename Real, glm::qualifier Q>
 Vec3<Real> FromGlm(const glm::vec<3, Real, Q>& v) { return {v.x, v.y, v.z}; }
 
-template <typename Real>
-glm::vec<3, Real> ToGlm(const Vec3<Real>& v) { return {v.x, v.y, v.z}; }
-
 // Medium to medium: the camera segment origin + t dir, t in [tmin, tmax], gathering from the
 // VRL point vrl_point on a VRL travelling along vrl_dir; both scatter with HG(g).
 template <typename Real>

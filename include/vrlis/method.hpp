@@ -16,48 +16,48 @@
 
 namespace vrlis {
 
-// Step two: a point on a segment seen from a point (built from a SegmentQuery).
-using CameraSamplers =
+// The vocabulary of "which sampler for which step":
+// - a segment sampler picks a point on a segment seen from a point (built from a
+//   SegmentQuery): step two of the medium-to-medium gather (on the camera segment), and the
+//   one step of the surface gather (on the VRL) and of single scattering (on the camera segment);
+// - a VRL sampler picks the point on the VRL in step one of the medium-to-medium gather
+//   (built from a MediumGatherQuery);
+// - GatherSamplers is the pair a renderer is configured with.
+using SegmentSamplers =
     Registry<EquiangularEntry, NovakEntry, CauchySumEntry, CauchyMixtureEntry, FullProductEntry, AutoEntry>;
-// Step one of the medium-to-medium gather: a point on the VRL (built from a MediumGatherQuery).
 using VrlSamplers = Registry<VrlPointEntry, VrlMarginalEntry>;
 
-using Method = CameraSamplers::Choice;
-using StepOne = VrlSamplers::Choice;
-inline constexpr auto kMethods = CameraSamplers::All();
-inline constexpr auto kStepOnes = VrlSamplers::All();
+using SegmentChoice = SegmentSamplers::Choice;
+using VrlChoice = VrlSamplers::Choice;
+inline constexpr auto kSegmentSamplers = SegmentSamplers::All();
+inline constexpr auto kVrlSamplers = VrlSamplers::All();
 
 template <typename Registry>
 constexpr std::string_view Name(Choice<Registry> c) { return c.name(); }
-inline std::optional<Method> ParseMethod(std::string_view name) { return CameraSamplers::Parse(name); }
+inline std::optional<SegmentChoice> ParseSegmentSampler(std::string_view name) { return SegmentSamplers::Parse(name); }
 
-template <typename Real, typename F>
-decltype(auto) WithSampler(Method m, const SegmentQuery<Real>& q, F&& f) {
-  return CameraSamplers::With(m, q, std::forward<F>(f));
-}
-
-// A whole medium-to-medium gather: step one on the VRL, step two on the camera segment.
-// Named "camera" (step one VrlPoint, as Novák et al.) or "camera+vrl", e.g. "novak",
+// The samplers of a whole render: step one on the VRL, the segment sampler for every other
+// step. Named "segment" (step one VrlPoint, as Novák et al.) or "segment+vrl", e.g. "novak",
 // "full-product+marginal".
-struct GatherMethod {
-  Method camera{};
-  StepOne vrl{};
-  friend bool operator==(GatherMethod a, GatherMethod b) { return a.camera == b.camera && a.vrl == b.vrl; }
+struct GatherSamplers {
+  SegmentChoice segment{};
+  VrlChoice vrl{};
+  friend bool operator==(GatherSamplers a, GatherSamplers b) { return a.segment == b.segment && a.vrl == b.vrl; }
 };
 
-inline std::string Name(GatherMethod m) {
-  std::string name(m.camera.name());
+inline std::string Name(GatherSamplers m) {
+  std::string name(m.segment.name());
   if (m.vrl != VrlSamplers::Of<VrlPointEntry>()) (name += "+") += m.vrl.name();
   return name;
 }
 
-inline std::optional<GatherMethod> ParseGatherMethod(std::string_view name) {
+inline std::optional<GatherSamplers> ParseGatherSamplers(std::string_view name) {
   std::size_t plus = name.find('+');
-  std::optional<Method> camera = ParseMethod(name.substr(0, plus));
-  std::optional<StepOne> vrl =
+  std::optional<SegmentChoice> segment = ParseSegmentSampler(name.substr(0, plus));
+  std::optional<VrlChoice> vrl =
       plus == std::string_view::npos ? VrlSamplers::Of<VrlPointEntry>() : VrlSamplers::Parse(name.substr(plus + 1));
-  if (!camera || !vrl) return std::nullopt;
-  return GatherMethod{*camera, *vrl};
+  if (!segment || !vrl) return std::nullopt;
+  return GatherSamplers{*segment, *vrl};
 }
 
 }  // namespace vrlis

@@ -4,7 +4,7 @@
 #include "vrlis_integration/gather.hpp"
 #include "vrlis_integration/path_tracer.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
                      Rng& rng, GatherCount* count) {
@@ -21,7 +21,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta);
         count->medium_to_medium += vrls.size();
       }
-      if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
+      if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {
@@ -46,7 +46,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     // The first diffuse vertex ends the camera chain.
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
     if (tr.medium_to_surface && m.Present()) {
-      L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrls, rng);
+      L += beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng);
       count->medium_to_surface += vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
@@ -60,4 +60,4 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
   return L;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -4,7 +4,7 @@
 #include <vrlis/gather/point_light_gather.hpp>
 #include <vrlis/gather/surface_gather.hpp>
 
-namespace vrli {
+namespace vrlis::integration {
 namespace {
 
 vrlis::Medium<float> MediumOf(const HomogeneousMedium& m) { return {m.g, m.sigma_s, m.SigmaT()}; }
@@ -75,7 +75,7 @@ Spectrum SumOverBatches(const Scene& scene, const Vrl* first, const Vrl* last, b
 
 // The medium-to-medium sum over the VRLs [first, last): the samplers are chosen and the
 // camera segment and medium validated once for all of them.
-Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
+Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
@@ -98,22 +98,22 @@ Spectrum GatherEach(vrlis::GatherMethod method, const Scene& scene, const Camera
 
 }  // namespace
 
-Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
   return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput);
 }
 
-Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput) {
   return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput);
 }
 
-Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
+Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng) {
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   const bool valid = vrlis::ValidateSurfacePoint(p, nf) == vrlis::QueryError::None &&
                      vrlis::Validate(medium) == vrlis::QueryError::None;
-  return albedo * vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
+  return albedo * vrlis::SegmentSamplers::WithEntry(method, [&](auto entry) {
     using Sampler = typename decltype(entry)::template Sampler<float>;
     return SumOverBatches<1>(
         scene, vrls.data(), vrls.data() + vrls.size(), valid, rng, [](const vrlis::VrlSegment<float>&, const Vrl&) {},
@@ -123,7 +123,7 @@ Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p
   });
 }
 
-Spectrum SingleScattering(vrlis::Method method, const Scene& scene, const CameraSegment& seg, Rng& rng) {
+Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng) {
   const HomogeneousMedium& m = scene.medium;
   Spectrum sum;
   for (const PointLight& l : scene.lights.points) {
@@ -146,4 +146,4 @@ Spectrum SingleScattering(vrlis::Method method, const Scene& scene, const Camera
   return sum;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

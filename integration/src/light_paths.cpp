@@ -2,7 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
-namespace vrli {
+namespace vrlis::integration {
 namespace {
 
 struct Emission {
@@ -94,4 +94,4 @@ std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& tr
   return vrls;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -3,9 +3,9 @@
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 namespace {
-constexpr vrlis::Method kEquiangular = vrlis::CameraSamplers::Of<vrlis::EquiangularEntry>();
+constexpr vrlis::SegmentChoice kEquiangular = vrlis::SegmentSamplers::Of<vrlis::EquiangularEntry>();
 }  // namespace
 
 Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) const {
@@ -57,4 +57,4 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
   return L;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

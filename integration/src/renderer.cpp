@@ -10,7 +10,7 @@
 #include "vrlis_integration/light_paths.hpp"
 #include "vrlis_integration/path_tracer.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 namespace {
 
 // Calls f(x, y, rng, ray) for every pixel, in parallel over rows; the random stream of a
@@ -62,4 +62,4 @@ Film PathTracingRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, Pas
   return film;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

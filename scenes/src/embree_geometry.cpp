@@ -5,9 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-namespace vrl_render {
+namespace vrlis::scenes {
 
-using vrli::Vec3f;
+using vrlis::integration::Vec3f;
 
 namespace {
 
@@ -18,11 +18,11 @@ using Sphere = EmbreeGeometry::Sphere;
 // et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019).
 bool SphereRoots(const Sphere& s, Vec3f o, Vec3f d, float* t0, float* t1) {
   Vec3f f = o - s.center;
-  float a = vrli::Dot(d, d), b = -vrli::Dot(f, d);
+  float a = vrlis::integration::Dot(d, d), b = -vrlis::integration::Dot(f, d);
   Vec3f l = f + (b / a) * d;  // f less its component along d
-  float disc = s.radius * s.radius - vrli::Dot(l, l);
+  float disc = s.radius * s.radius - vrlis::integration::Dot(l, l);
   if (!(disc >= 0)) return false;
-  float c = vrli::Dot(f, f) - s.radius * s.radius;
+  float c = vrlis::integration::Dot(f, f) - s.radius * s.radius;
   float q = b + std::copysign(std::sqrt(a * disc), b);
   *t0 = c / q;
   *t1 = q / a;
@@ -141,7 +141,7 @@ void EmbreeGeometry::Commit() {
   rtcCommitScene(scene_);
 }
 
-bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHit* hit) const {
+bool EmbreeGeometry::Intersect(const vrlis::integration::Ray& ray, float tmax, vrlis::integration::SurfaceHit* hit) const {
   if (Empty()) return false;  // a medium alone: no call into Embree per ray
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -152,7 +152,7 @@ bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHi
   rh.ray.dir_x = ray.d.x;
   rh.ray.dir_y = ray.d.y;
   rh.ray.dir_z = ray.d.z;
-  rh.ray.tnear = vrli::kRayEpsilon;
+  rh.ray.tnear = vrlis::integration::kRayEpsilon;
   rh.ray.tfar = tmax;
   rh.ray.mask = ~0u;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -161,11 +161,11 @@ bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHi
   hit->t = rh.ray.tfar;
   hit->p = ray(rh.ray.tfar);
   if (rh.hit.geomID == quad_geometry_) {
-    hit->n = vrli::Normalize(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+    hit->n = vrlis::integration::Normalize(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
     hit->material = quad_materials_[rh.hit.primID];
   } else {
     const Sphere& s = spheres_[rh.hit.primID];
-    hit->n = vrli::Normalize(hit->p - s.center);  // outwards
+    hit->n = vrlis::integration::Normalize(hit->p - s.center);  // outwards
     hit->material = s.material;
   }
   return true;
@@ -174,8 +174,8 @@ bool EmbreeGeometry::Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHi
 bool EmbreeGeometry::Occluded(Vec3f p0, Vec3f p1) const {
   if (Empty()) return false;
   Vec3f d = p1 - p0;
-  float len = vrli::Length(d);
-  if (!(len > 2 * vrli::kRayEpsilon)) return false;
+  float len = vrlis::integration::Length(d);
+  if (!(len > 2 * vrlis::integration::kRayEpsilon)) return false;
   d = (1 / len) * d;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -186,11 +186,11 @@ bool EmbreeGeometry::Occluded(Vec3f p0, Vec3f p1) const {
   ray.dir_x = d.x;
   ray.dir_y = d.y;
   ray.dir_z = d.z;
-  ray.tnear = vrli::kRayEpsilon;
-  ray.tfar = len - vrli::kRayEpsilon;
+  ray.tnear = vrlis::integration::kRayEpsilon;
+  ray.tfar = len - vrlis::integration::kRayEpsilon;
   ray.mask = ~0u;
   rtcOccluded1(scene_, &context, &ray);
   return ray.tfar < 0;
 }
 
-}  // namespace vrl_render
+}  // namespace vrlis::scenes

@@ -7,9 +7,9 @@
 
 #include <vrlis_integration/scene.hpp>
 
-namespace vrl_render {
+namespace vrlis::scenes {
 
-class EmbreeGeometry : public vrli::Geometry {
+class EmbreeGeometry : public vrlis::integration::Geometry {
  public:
   EmbreeGeometry();
   ~EmbreeGeometry() override;
@@ -17,18 +17,18 @@ class EmbreeGeometry : public vrli::Geometry {
   EmbreeGeometry& operator=(const EmbreeGeometry&) = delete;
 
   // Corners in order around the quad.
-  void AddQuad(vrli::Vec3f a, vrli::Vec3f b, vrli::Vec3f c, vrli::Vec3f d, int material);
+  void AddQuad(vrlis::integration::Vec3f a, vrlis::integration::Vec3f b, vrlis::integration::Vec3f c, vrlis::integration::Vec3f d, int material);
   // The six faces of an axis-aligned box.
-  void AddBox(vrli::Vec3f lo, vrli::Vec3f hi, int material);
-  void AddSphere(vrli::Vec3f center, float radius, int material);
+  void AddBox(vrlis::integration::Vec3f lo, vrlis::integration::Vec3f hi, int material);
+  void AddSphere(vrlis::integration::Vec3f center, float radius, int material);
   void Commit();  // after the last Add
   bool Empty() const { return quad_vertices_.empty() && spheres_.empty(); }
 
-  bool Intersect(const vrli::Ray& ray, float tmax, vrli::SurfaceHit* hit) const override;
-  bool Occluded(vrli::Vec3f p0, vrli::Vec3f p1) const override;
+  bool Intersect(const vrlis::integration::Ray& ray, float tmax, vrlis::integration::SurfaceHit* hit) const override;
+  bool Occluded(vrlis::integration::Vec3f p0, vrlis::integration::Vec3f p1) const override;
 
   struct Sphere {
-    vrli::Vec3f center;
+    vrlis::integration::Vec3f center;
     float radius;
     int material;
   };
@@ -36,10 +36,10 @@ class EmbreeGeometry : public vrli::Geometry {
  private:
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
-  std::vector<vrli::Vec3f> quad_vertices_;
+  std::vector<vrlis::integration::Vec3f> quad_vertices_;
   std::vector<int> quad_materials_;
   std::vector<Sphere> spheres_;
   unsigned quad_geometry_ = RTC_INVALID_GEOMETRY_ID;
 };
 
-}  // namespace vrl_render
+}  // namespace vrlis::scenes

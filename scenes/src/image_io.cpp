@@ -15,7 +15,7 @@
 #include <fstream>
 #include <vector>
 
-namespace vrl_render {
+namespace vrlis::scenes {
 namespace {
 
 std::string TempPath(const std::string& path) { return path + ".tmp" + std::to_string(getpid()); }
@@ -49,12 +49,12 @@ std::uint8_t ToSrgb8(float v) {
 
 }  // namespace
 
-bool WriteExr(const std::string& path, const vrli::Film& film, std::string* error) {
+bool WriteExr(const std::string& path, const vrlis::integration::Film& film, std::string* error) {
   return Atomically(path, error, [&](const std::string& tmp) {
     Imf::Header header(film.width, film.height);
     Imf::FrameBuffer fb;
     char* base = const_cast<char*>(reinterpret_cast<const char*>(film.pixels.data()));
-    const std::size_t xs = sizeof(vrli::Spectrum), ys = xs * static_cast<std::size_t>(film.width);
+    const std::size_t xs = sizeof(vrlis::integration::Spectrum), ys = xs * static_cast<std::size_t>(film.width);
     const char* names[3] = {"R", "G", "B"};
     for (int c = 0; c < 3; ++c) {
       header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
@@ -67,14 +67,14 @@ bool WriteExr(const std::string& path, const vrli::Film& film, std::string* erro
   });
 }
 
-std::optional<vrli::Film> ReadExr(const std::string& path, std::string* error) {
+std::optional<vrlis::integration::Film> ReadExr(const std::string& path, std::string* error) {
   try {
     Imf::InputFile file(path.c_str());
     Imath::Box2i dw = file.header().dataWindow();
-    vrli::Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+    vrlis::integration::Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
     Imf::FrameBuffer fb;
     char* base = reinterpret_cast<char*>(film.pixels.data());
-    const std::size_t xs = sizeof(vrli::Spectrum), ys = xs * static_cast<std::size_t>(film.width);
+    const std::size_t xs = sizeof(vrlis::integration::Spectrum), ys = xs * static_cast<std::size_t>(film.width);
     base -= (static_cast<std::ptrdiff_t>(dw.min.x) * xs + static_cast<std::ptrdiff_t>(dw.min.y) * ys);
     const char* names[3] = {"R", "G", "B"};
     for (int c = 0; c < 3; ++c) fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
@@ -87,11 +87,11 @@ std::optional<vrli::Film> ReadExr(const std::string& path, std::string* error) {
   }
 }
 
-bool WritePng(const std::string& path, const vrli::Film& film, float exposure, std::string* error) {
+bool WritePng(const std::string& path, const vrlis::integration::Film& film, float exposure, std::string* error) {
   return Atomically(path, error, [&](const std::string& tmp) {
     std::vector<std::uint8_t> rgb;
     rgb.reserve(film.pixels.size() * 3);
-    for (const vrli::Spectrum& s : film.pixels)
+    for (const vrlis::integration::Spectrum& s : film.pixels)
       for (float v : {s.r, s.g, s.b}) rgb.push_back(ToSrgb8(v * exposure));
     return stbi_write_png(tmp.c_str(), film.width, film.height, 3, rgb.data(), film.width * 3) != 0;
   });
@@ -106,9 +106,9 @@ bool WriteText(const std::string& path, const std::string& text, std::string* er
   });
 }
 
-float AutoExposure(const vrli::Film& film) {
+float AutoExposure(const vrlis::integration::Film& film) {
   std::vector<float> lum;
-  for (const vrli::Spectrum& s : film.pixels) lum.push_back(0.2126f * s.r + 0.7152f * s.g + 0.0722f * s.b);
+  for (const vrlis::integration::Spectrum& s : film.pixels) lum.push_back(0.2126f * s.r + 0.7152f * s.g + 0.0722f * s.b);
   if (lum.empty()) return 1;
   auto k = lum.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(lum.size() - 1));
   std::nth_element(lum.begin(), k, lum.end());
@@ -124,4 +124,4 @@ bool CanWrite(const std::string& path) {
   return ok;
 }
 
-}  // namespace vrl_render
+}  // namespace vrlis::scenes

@@ -4,19 +4,19 @@
 
 #include "embree_geometry.hpp"
 
-namespace vrl_render {
+namespace vrlis::scenes {
 namespace {
 
-using vrli::Material;
-using vrli::MaterialKind;
-using vrli::Spectrum;
-using vrli::Vec3f;
+using vrlis::integration::Material;
+using vrlis::integration::MaterialKind;
+using vrlis::integration::Spectrum;
+using vrlis::integration::Vec3f;
 
-int AddMaterial(vrli::Scene& s, Material m) {
+int AddMaterial(vrlis::integration::Scene& s, Material m) {
   s.materials.push_back(m);
   return static_cast<int>(s.materials.size()) - 1;
 }
-int Diffuse(vrli::Scene& s, Spectrum albedo) { return AddMaterial(s, {MaterialKind::Diffuse, albedo, 1.5f}); }
+int Diffuse(vrlis::integration::Scene& s, Spectrum albedo) { return AddMaterial(s, {MaterialKind::Diffuse, albedo, 1.5f}); }
 
 // An axis-aligned room [lo, hi] seen from inside, with its own material per wall.
 void AddRoom(EmbreeGeometry& g, Vec3f lo, Vec3f hi, int left, int right, int floor, int ceiling, int back,
@@ -39,20 +39,20 @@ void Bidirectional(BuiltScene& b, EmbreeGeometry&) {
 }
 
 void Room(BuiltScene& b, EmbreeGeometry& g) {
-  vrli::Scene& s = b.scene;
+  vrlis::integration::Scene& s = b.scene;
   int grey = Diffuse(s, Spectrum(0.5f));
   int orange = Diffuse(s, {1, 0.5f, 0}), cyan = Diffuse(s, {0, 1, 1});
   AddRoom(g, {-2.55f, -2.5f, -4.5f}, {2.55f, 2.5f, 0.5f}, orange, cyan, grey, grey, grey, grey);
   g.AddBox({0.25f, -2.5f, -3.75f}, {1.75f, -1, -2.75f}, grey);
   g.AddBox({-1.75f, -2.5f, -4.5f}, {-0.25f, 0.5f, -3.75f}, grey);
   s.medium = {0.01f, 0.1f, 0.5f};
-  Vec3f dir = vrli::Normalize(Vec3f{-0.1f, -1, 0.075f});
+  Vec3f dir = vrlis::integration::Normalize(Vec3f{-0.1f, -1, 0.075f});
   for (auto [x0, x1] : {std::pair{-0.65f, -0.495f}, {-0.425f, -0.27f}, {-0.2f, -0.045f}, {0.025f, 0.18f}})
     s.lights.rects.push_back({{x0, 2.5f, -3.5f}, {x1 - x0, 0, 0}, {0, 0, 0.32f}, dir, Spectrum(20.f)});
 }
 
 void Cube(BuiltScene& b, EmbreeGeometry& g) {
-  vrli::Scene& s = b.scene;
+  vrlis::integration::Scene& s = b.scene;
   int grey = Diffuse(s, Spectrum(0.5f));
   int red = Diffuse(s, {0.75f, 0.1f, 0.1f}), green = Diffuse(s, {0.1f, 0.75f, 0.1f});
   AddRoom(g, {-2.75f, -2.5f, -5.5f}, {2.75f, 3.0f, 0.5f}, red, green, grey, grey, grey, grey);
@@ -67,7 +67,7 @@ void Cube(BuiltScene& b, EmbreeGeometry& g) {
 }
 
 void Corner(BuiltScene& b, EmbreeGeometry& g) {
-  vrli::Scene& s = b.scene;
+  vrlis::integration::Scene& s = b.scene;
   int grey = Diffuse(s, Spectrum(0.5f));
   struct Plane {
     Vec3f n;
@@ -83,7 +83,7 @@ void Corner(BuiltScene& b, EmbreeGeometry& g) {
       {{0.122788f, -0.007596f, -0.992404f}, 4.0f, grey},
   };
   for (const Plane& p : planes) {  // n . x + d = 0 as a large quad: rays stay inside
-    vrli::Frame f(vrli::Normalize(p.n));
+    vrlis::integration::Frame f(vrlis::integration::Normalize(p.n));
     Vec3f c = (-p.d) * p.n;
     const float r = 40;
     g.AddQuad(c + r * (f.x + f.y), c + r * (f.y - f.x), c - r * (f.x + f.y), c + r * (f.x - f.y), p.material);
@@ -91,7 +91,7 @@ void Corner(BuiltScene& b, EmbreeGeometry& g) {
   g.AddSphere({0, 0, -0.8f}, 0.25f, Diffuse(s, Spectrum(0.9f)));
   s.medium = {0.5f, 0.65f, 0.5f};
   s.lights.points.push_back({{-2.45f, 2.35f, 1.25f}, Spectrum(60.f), false});
-  s.camera.fov_x = vrli::kPi / 3;
+  s.camera.fov_x = vrlis::integration::kPi / 3;
 }
 
 }  // namespace
@@ -110,7 +110,7 @@ std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverride
   geometry->Commit();
   b.has_surfaces = !geometry->Empty();
   b.scene.geometry = geometry;
-  vrli::HomogeneousMedium& m = b.scene.medium;
+  vrlis::integration::HomogeneousMedium& m = b.scene.medium;
   if (o.g) m.g = *o.g;
   if (o.sigma_s) m.sigma_s = *o.sigma_s;
   if (o.sigma_a) m.sigma_a = *o.sigma_a;
@@ -118,4 +118,4 @@ std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverride
   return b;
 }
 
-}  // namespace vrl_render
+}  // namespace vrlis::scenes

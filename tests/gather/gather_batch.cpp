@@ -88,9 +88,9 @@ void BatchIsOneAtATime() {
   std::mt19937 rng(29);
   std::uniform_real_distribution<Real> uniform(0, 1);
   const vrlis::Medium<Real> medium{Real(0.6), Real(0.4), Real(0.5)};
-  for (vrlis::StepOne one : vrlis::kStepOnes)
-    for (vrlis::Method two : vrlis::kMethods) {
-      vrlis::GatherMethod method{two, one};
+  for (vrlis::VrlChoice one : vrlis::kVrlSamplers)
+    for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
+      vrlis::GatherSamplers method{two, one};
       int compared = 0, contributing = 0;
       for (int n = 1; n <= 2 * vrlis::kVrlPointBatch + 3; ++n) {
         const vrlis::RaySegment<Real> camera{{0, 0, 0}, {0, 0, -1}, Real(0.5) * uniform(rng),
@@ -134,7 +134,7 @@ void SurfaceBatchIsOneAtATime() {
   std::uniform_real_distribution<Real> uniform(0, 1);
   const vrlis::Medium<Real> medium{Real(0.6), Real(0.4), Real(0.5)};
   const vrlis::Vec3<Real> point{0, 0, -2}, normal = vrlis::Normalize(vrlis::Vec3<Real>{Real(0.3), Real(-0.2), Real(-1)});
-  for (vrlis::Method method : vrlis::kMethods) {
+  for (vrlis::SegmentChoice method : vrlis::kSegmentSamplers) {
     int contributing = 0, compared = 0;
     for (int n = 1; n <= 19; ++n) {
       std::vector<vrlis::VrlSegment<Real>> vrls;
@@ -144,7 +144,7 @@ void SurfaceBatchIsOneAtATime() {
         u.push_back(uniform(rng));
       }
       std::vector<vrlis::GatherSample<Real>> batch(n);
-      vrlis::CameraSamplers::WithEntry(method, [&](auto entry) {
+      vrlis::SegmentSamplers::WithEntry(method, [&](auto entry) {
         vrlis::SampleSurfaceGathers<typename decltype(entry)::template Sampler<Real>>(
             vrlis::ValidQuery{}, point, normal, medium, vrls.data(), n, u.data(), batch.data());
       });

@@ -94,9 +94,9 @@ void MediumGatherIsUnbiased(const char* type) {
   for (int k = 0; k < 3; ++k) {
     vrlis::MediumGatherQuery<Real> q = MediumCase<Real>(k);
     double integral = MediumIntegral(q);
-    for (vrlis::StepOne one : vrlis::kStepOnes)
-      for (vrlis::Method two : vrlis::kMethods) {
-        vrlis::GatherMethod m{two, one};
+    for (vrlis::VrlChoice one : vrlis::kVrlSamplers)
+      for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
+        vrlis::GatherSamplers m{two, one};
         auto estimate = MeanAndError<Real>(
             [&](Real u1, Real u2) { return double(vrlis::SampleMediumGather(m, q, u1, u2).weight); }, 200000, 7 + k);
         CheckUnbiased(std::string(type) + " medium case " + std::to_string(k) + " " + vrlis::Name(m), estimate, integral);
@@ -120,7 +120,7 @@ void SurfaceGatherIsUnbiased(const char* type) {
     vrlis::SurfaceGatherQuery<Real> q = SurfaceCase<Real>(k);
     double integral = Integrate([&](double v) { return double(vrlis::SurfaceGatherIntegrand(q, Real(v))); }, 0.0,
                                 q.vrl.length);
-    for (vrlis::Method m : vrlis::kMethods) {
+    for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) {
       auto estimate = MeanAndError<Real>(
           [&](Real u, Real) { return double(vrlis::SampleSurfaceGather(m, q, u).weight); }, 200000, 17 + k);
       CheckUnbiased(std::string(type) + " surface case " + std::to_string(k) + " " + std::string(vrlis::Name(m)),
@@ -137,7 +137,7 @@ void PointLightGatherIsUnbiased(const char* type) {
     vrlis::PointLightGatherQuery<Real> q{Camera<Real>(tmax[k]), lights[k], {Real(k == 1 ? -0.8 : 0.6), Real(0.4), Real(0.6)}};
     double integral = Integrate([&](double t) { return double(vrlis::PointLightGatherIntegrand(q, Real(t))); },
                                 double(q.camera.tmin), tmax[k]);
-    for (vrlis::Method m : vrlis::kMethods) {
+    for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) {
       auto estimate = MeanAndError<Real>(
           [&](Real u, Real) { return double(vrlis::SamplePointLightGather(m, q, u).weight); }, 200000, 27 + k);
       CheckUnbiased(std::string(type) + " point light case " + std::to_string(k) + " " + std::string(vrlis::Name(m)),

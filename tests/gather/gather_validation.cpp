@@ -53,11 +53,11 @@ void MediumQueriesAreValidated() {
     c.apply(q);
     INFO(c.what);
     CHECK(vrlis::Validate(q) == c.expected);
-    for (vrlis::StepOne one : vrlis::kStepOnes)
-      for (vrlis::Method two : vrlis::kMethods) {
-        INFO(vrlis::Name(vrlis::GatherMethod{two, one}));
+    for (vrlis::VrlChoice one : vrlis::kVrlSamplers)
+      for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
+        INFO(vrlis::Name(vrlis::GatherSamplers{two, one}));
         for (Real u : {Real(0), Real(0.37), Real(1)}) {
-          vrlis::GatherSample<Real> s = vrlis::SampleMediumGather(vrlis::GatherMethod{two, one}, q, u, 1 - u);
+          vrlis::GatherSample<Real> s = vrlis::SampleMediumGather(vrlis::GatherSamplers{two, one}, q, u, 1 - u);
           CHECK(std::isfinite(s.weight));
           CHECK(s.weight >= 0);
           if (c.expected != E::None) CHECK(s.weight == 0);
@@ -85,7 +85,7 @@ TEST_CASE("surface and point-light gather queries are validated") {
   auto nan_point = s;
   nan_point.point.z = std::nanf("");
   CHECK(vrlis::Validate(nan_point) == E::NonFinite);
-  CHECK(vrlis::SampleSurfaceGather(vrlis::kMethods[1], nan_point, 0.5f).weight == 0);
+  CHECK(vrlis::SampleSurfaceGather(vrlis::kSegmentSamplers[1], nan_point, 0.5f).weight == 0);
 
   vrlis::PointLightGatherQuery<float> p{{{0, 0, 0}, {0, 0, -1}, 0, 5}, {0.5f, 0, -2}, {0.5f, 0.3f, 0.4f}};
   CHECK(vrlis::Validate(p) == E::None);
@@ -95,21 +95,21 @@ TEST_CASE("surface and point-light gather queries are validated") {
   auto far_light = p;
   far_light.light.x = vrlis::MaxCoordinate<float>() * 2;
   CHECK(vrlis::Validate(far_light) == E::OutOfRange);
-  CHECK(vrlis::SamplePointLightGather(vrlis::kMethods[2], reversed, 0.5f).weight == 0);
+  CHECK(vrlis::SamplePointLightGather(vrlis::kSegmentSamplers[2], reversed, 0.5f).weight == 0);
 }
 
 TEST_CASE("gather methods are named camera[+vrl] and parse back") {
-  for (vrlis::StepOne one : vrlis::kStepOnes)
-    for (vrlis::Method two : vrlis::kMethods) {
-      vrlis::GatherMethod m{two, one};
-      auto parsed = vrlis::ParseGatherMethod(vrlis::Name(m));
+  for (vrlis::VrlChoice one : vrlis::kVrlSamplers)
+    for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
+      vrlis::GatherSamplers m{two, one};
+      auto parsed = vrlis::ParseGatherSamplers(vrlis::Name(m));
       REQUIRE(parsed);
       CHECK(*parsed == m);
     }
-  CHECK(vrlis::Name(*vrlis::ParseGatherMethod("novak")) == "novak");
-  CHECK(vrlis::Name(*vrlis::ParseGatherMethod("full-product+marginal")) == "full-product+marginal");
-  CHECK_FALSE(vrlis::ParseGatherMethod("novak+"));
-  CHECK_FALSE(vrlis::ParseGatherMethod("nvak"));
-  CHECK_FALSE(vrlis::ParseGatherMethod("novak+novak"));
-  CHECK_FALSE(vrlis::ParseGatherMethod(""));
+  CHECK(vrlis::Name(*vrlis::ParseGatherSamplers("novak")) == "novak");
+  CHECK(vrlis::Name(*vrlis::ParseGatherSamplers("full-product+marginal")) == "full-product+marginal");
+  CHECK_FALSE(vrlis::ParseGatherSamplers("novak+"));
+  CHECK_FALSE(vrlis::ParseGatherSamplers("nvak"));
+  CHECK_FALSE(vrlis::ParseGatherSamplers("novak+novak"));
+  CHECK_FALSE(vrlis::ParseGatherSamplers(""));
 }

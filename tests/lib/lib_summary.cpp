@@ -41,13 +41,13 @@ int main(int argc, char** argv) {
   table.precision(4);
   for (const auto& [key, v] : worst) table << key << " = " << v.first << "  (" << v.second.substr(v.second.find_first_not_of(' ') == std::string::npos ? 0 : v.second.find_first_not_of(' ')) << ")\n";
   for (const auto& [key, n] : counts) table << key << " = " << n << "\n";
-  table << "chi-square significance per test: " << vrlis_test::kChiSquareAlpha << " (Bonferroni, 0.01 / "
-        << vrlis_test::kChiSquareBudget << ")\n";
+  table << "chi-square significance per test: " << vrlis::test::kChiSquareAlpha << " (Bonferroni, 0.01 / "
+        << vrlis::test::kChiSquareBudget << ")\n";
   std::cout << table.str();
   std::ofstream(fs::path(argv[1]) / "summary.txt") << table.str();
   double tests = counts["all chi_square_tests"];
-  if (tests > vrlis_test::kChiSquareBudget) {
-    std::cerr << "the suite ran " << tests << " chi-square tests, more than the budget " << vrlis_test::kChiSquareBudget
+  if (tests > vrlis::test::kChiSquareBudget) {
+    std::cerr << "the suite ran " << tests << " chi-square tests, more than the budget " << vrlis::test::kChiSquareBudget
               << " its per-test significance assumes\n";
     return 1;
   }

@@ -5,7 +5,7 @@
 
 #include "checks.hpp"
 
-using namespace vrlis_test;
+using namespace vrlis::test;
 
 TEST_CASE("quadrature reproduces closed forms on peaked integrands", "[lib][self]") {
   // The inverse square over a segment, in the angle map: (theta_b - theta_a) / h.

@@ -19,7 +19,7 @@
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis/vrlis.hpp>
 
-#include "stats.hpp"  // tests/lib: the suite's one chi-square test
+#include "stats.hpp"  // tests/support: the suite's one chi-square test
 
 namespace {
 
@@ -218,7 +218,7 @@ TEMPLATE_TEST_CASE("VrlMarginal: chi-square of samples against the pdf", "", flo
       int b = int(std::upper_bound(edges.begin(), edges.end(), v) - edges.begin()) - 1;
       observed[std::clamp(b, 0, kBins - 1)] += 1;
     }
-    vrlis_test::ChiSquare r = vrlis_test::PearsonTest(observed, probability, kSamples);
+    vrlis::test::ChiSquare r = vrlis::test::PearsonTest(observed, probability, kSamples);
     REQUIRE(r.dof >= 1);
     double p = r.unexpected == 0 ? r.p_value : 0.0;
     INFO("g " << c.g << " sigma_t " << c.sigma_t << " chi2 " << r.statistic << " dof " << r.dof << " p " << p);

@@ -14,7 +14,7 @@
 
 namespace {
 
-using vrli::Vec3f;
+using vrlis::integration::Vec3f;
 
 struct V3 {
   double x, y, z;
@@ -29,7 +29,7 @@ double Hg(double g, double cos) { return (1 - g * g) / (4 * M_PI * std::pow(1 + 
 
 // Phi sigma_s^2 Int_0^L Int_0^t rho(w_c . w^) rho(-w_l . w^) T(u) T(v) T(|w|) / |w|^2 dv du,
 // the inner integral over the camera segment in the angle variable u - u0 = h tan(theta).
-double VrlIntegral(V3 o, V3 wc, double L, V3 xl, V3 wl, double t, const vrli::HomogeneousMedium& m) {
+double VrlIntegral(V3 o, V3 wc, double L, V3 xl, V3 wl, double t, const vrlis::integration::HomogeneousMedium& m) {
   using Quad = boost::math::quadrature::gauss_kronrod<double, 31>;
   const double st = m.SigmaT(), g = m.g;
   auto inner = [&](double v) {
@@ -59,10 +59,10 @@ double VrlIntegral(V3 o, V3 wc, double L, V3 xl, V3 wl, double t, const vrli::Ho
 }  // namespace
 
 TEST_CASE("bidirectional: every sampler matches the quadrature of the VRL integral", "[render][reference]") {
-  auto built = vrl_render::BuildScene("bidirectional", {});
+  auto built = vrlis::scenes::BuildScene("bidirectional", {});
   REQUIRE(built);
-  const vrli::Scene& scene = built->scene;
-  vrli::RenderSettings s;
+  const vrlis::integration::Scene& scene = built->scene;
+  vrlis::integration::RenderSettings s;
   s.width = s.height = 16;
   s.vrls_per_pass = 8;
   s.jitter = false;
@@ -71,30 +71,30 @@ TEST_CASE("bidirectional: every sampler matches the quadrature of the VRL integr
   const std::vector<std::pair<int, int>> pixels = {{2, 3}, {5, 8}, {7, 7}, {9, 4}, {11, 12}, {13, 6}, {4, 13}, {8, 10}};
 
   // The reference: the same VRLs the renderer traces (fixed directions, flux power / N).
-  const vrli::PointLight& light = scene.lights.points.at(0);
+  const vrlis::integration::PointLight& light = scene.lights.points.at(0);
   const double flux = 4 * M_PI * light.intensity.r / s.vrls_per_pass;
   const double L = scene.medium.max_distance;
   std::vector<double> ref;
   for (auto [px, py] : pixels) {
-    vrli::Ray ray = scene.camera.Generate(px + 0.5f, py + 0.5f, s.width, s.height);
+    vrlis::integration::Ray ray = scene.camera.Generate(px + 0.5f, py + 0.5f, s.width, s.height);
     double sum = 0;
     for (int i = 0; i < s.vrls_per_pass; ++i)
-      sum += VrlIntegral(D(ray.o), D(ray.d), L, D(light.position), D(vrli::FibonacciDirection(i, s.vrls_per_pass)),
+      sum += VrlIntegral(D(ray.o), D(ray.d), L, D(light.position), D(vrlis::integration::FibonacciDirection(i, s.vrls_per_pass)),
                          L, scene.medium);
     ref.push_back(flux * sum);
   }
 
   std::vector<double> mean_all, se_all, ref_all;
-  for (vrlis::Method method : vrlis::kMethods) {
-    s.transport.sampling.camera = method;
-    vrli::VrlRenderer renderer(scene, s);
+  for (vrlis::SegmentChoice method : vrlis::kSegmentSamplers) {
+    s.transport.sampling.segment = method;
+    vrlis::integration::VrlRenderer renderer(scene, s);
     std::vector<vrlis::RunningMoments> stats(pixels.size());
     for (int p = 0; p < passes; ++p) {
-      vrli::Film f = renderer.RenderPass(5, static_cast<std::uint64_t>(p), nullptr);
+      vrlis::integration::Film f = renderer.RenderPass(5, static_cast<std::uint64_t>(p), nullptr);
       for (std::size_t k = 0; k < pixels.size(); ++k) stats[k].add(f.at(pixels[k].first, pixels[k].second).r);
     }
-    auto [mean, se] = render_test::Estimates(stats);
-    auto z = render_test::Compare(mean, se, ref, std::vector<double>(ref.size(), 0.0), 0.01 / static_cast<double>(vrlis::kMethods.size()));
+    auto [mean, se] = vrlis::test::Estimates(stats);
+    auto z = vrlis::test::Compare(mean, se, ref, std::vector<double>(ref.size(), 0.0), 0.01 / static_cast<double>(vrlis::kSegmentSamplers.size()));
     std::printf("[render] bidirectional, %s vs quadrature: %s\n", std::string(vrlis::Name(method)).c_str(),
                 z.Describe().c_str());
     mean_all.insert(mean_all.end(), mean.begin(), mean.end());
@@ -102,12 +102,12 @@ TEST_CASE("bidirectional: every sampler matches the quadrature of the VRL integr
     ref_all.insert(ref_all.end(), ref.begin(), ref.end());
   }
   // All samplers and pixels together, Bonferroni over all 32 comparisons.
-  auto z = render_test::Compare(mean_all, se_all, ref_all, std::vector<double>(ref_all.size(), 0.0));
+  auto z = vrlis::test::Compare(mean_all, se_all, ref_all, std::vector<double>(ref_all.size(), 0.0));
   std::printf("[render] bidirectional, all samplers: %s\n", z.Describe().c_str());
   CHECK(z.Pass());
   // Negative control: 10% off must be detected.
   for (double& r : ref_all) r *= 1.1;
-  auto zc = render_test::Compare(mean_all, se_all, ref_all, std::vector<double>(ref_all.size(), 0.0));
+  auto zc = vrlis::test::Compare(mean_all, se_all, ref_all, std::vector<double>(ref_all.size(), 0.0));
   std::printf("[render] bidirectional, control x1.10: %s\n", zc.Describe().c_str());
   CHECK_FALSE(zc.Pass());
 }

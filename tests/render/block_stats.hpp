@@ -13,7 +13,7 @@
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis_integration/renderer.hpp>
 
-namespace render_test {
+namespace vrlis::test {
 
 struct BlockEstimate {
   std::vector<double> mean, stderr_;  // per block (or pixel)
@@ -29,12 +29,12 @@ inline BlockEstimate Estimates(const std::vector<vrlis::RunningMoments>& per_blo
 }
 
 // Runs `passes` passes and averages (r + g + b) / 3 over square blocks of `block` pixels.
-inline BlockEstimate EstimateBlocks(vrli::Renderer& r, int width, int height, int block,
+inline BlockEstimate EstimateBlocks(vrlis::integration::Renderer& r, int width, int height, int block,
                                     int passes, std::uint64_t seed, double scale = 1) {
   const int bx = width / block, by = height / block, nb = bx * by;
   std::vector<vrlis::RunningMoments> stats(static_cast<std::size_t>(nb));
   for (int p = 0; p < passes; ++p) {
-    vrli::Film f = r.RenderPass(seed, static_cast<std::uint64_t>(p), nullptr);
+    vrlis::integration::Film f = r.RenderPass(seed, static_cast<std::uint64_t>(p), nullptr);
     std::vector<double> b(static_cast<std::size_t>(nb));
     for (int y = 0; y < by * block; ++y)
       for (int x = 0; x < bx * block; ++x) b[static_cast<std::size_t>((y / block) * bx + x / block)] += f.at(x, y).Average();
@@ -83,4 +83,4 @@ inline ZSummary Compare(const BlockEstimate& a, const BlockEstimate& b, double a
   return Compare(a.mean, a.stderr_, b.mean, b.stderr_, alpha);
 }
 
-}  // namespace render_test
+}  // namespace vrlis::test

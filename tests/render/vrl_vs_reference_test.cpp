@@ -13,27 +13,27 @@ namespace {
 
 struct Case {
   const char* scene;
-  vrlis::Method method;
+  vrlis::SegmentChoice method;
   int size, block;  // image and block size in pixels
   int vrl_passes, vrls, pt_passes;
   double control;  // a radiometric error the test must detect at this budget
 };
 
 void Run(const Case& c) {
-  auto built = vrl_render::BuildScene(c.scene, {});
+  auto built = vrlis::scenes::BuildScene(c.scene, {});
   REQUIRE(built);
-  vrli::RenderSettings s;
+  vrlis::integration::RenderSettings s;
   s.width = s.height = c.size;
   s.vrls_per_pass = c.vrls;
   s.transport = built->transport;
-  s.transport.sampling.camera = c.method;
+  s.transport.sampling.segment = c.method;
   s.transport.light_caustics = false;  // the path tracer cannot sample L S+ paths from point lights
   const int block = c.block;
-  vrli::VrlRenderer vrl(built->scene, s);
-  vrli::PathTracingRenderer pt(built->scene, s);
-  auto a = render_test::EstimateBlocks(vrl, s.width, s.height, block, c.vrl_passes, 11);
-  auto b = render_test::EstimateBlocks(pt, s.width, s.height, block, c.pt_passes, 12);
-  render_test::ZSummary z = render_test::Compare(a, b);
+  vrlis::integration::VrlRenderer vrl(built->scene, s);
+  vrlis::integration::PathTracingRenderer pt(built->scene, s);
+  auto a = vrlis::test::EstimateBlocks(vrl, s.width, s.height, block, c.vrl_passes, 11);
+  auto b = vrlis::test::EstimateBlocks(pt, s.width, s.height, block, c.pt_passes, 12);
+  vrlis::test::ZSummary z = vrlis::test::Compare(a, b);
   double ra = 0, rb = 0;
   for (std::size_t k = 0; k < a.mean.size(); ++k) {
     ra += a.stderr_[k] / a.mean[k] / a.mean.size();
@@ -48,7 +48,7 @@ void Run(const Case& c) {
   auto scaled = a;
   for (double& m : scaled.mean) m *= c.control;
   for (double& e : scaled.stderr_) e *= c.control;
-  render_test::ZSummary zc = render_test::Compare(scaled, b);
+  vrlis::test::ZSummary zc = vrlis::test::Compare(scaled, b);
   std::printf("[render] %s, control x%.2f: %s\n", c.scene, c.control, zc.Describe().c_str());
   CHECK_FALSE(zc.Pass());
 }
@@ -56,13 +56,13 @@ void Run(const Case& c) {
 }  // namespace
 
 TEST_CASE("room: VRL image matches the path tracer", "[render][reference]") {
-  Run({"room", vrlis::CameraSamplers::Of<vrlis::NovakEntry>(), 32, 16, 480, 4, 2048, 1.25});
+  Run({"room", vrlis::SegmentSamplers::Of<vrlis::NovakEntry>(), 32, 16, 480, 4, 2048, 1.25});
 }
 
 TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
-  Run({"cube", vrlis::CameraSamplers::Of<vrlis::CauchySumEntry>(), 32, 8, 48, 32, 256, 1.1});
+  Run({"cube", vrlis::SegmentSamplers::Of<vrlis::CauchySumEntry>(), 32, 8, 48, 32, 256, 1.1});
 }
 
 TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
-  Run({"corner", vrlis::CameraSamplers::Of<vrlis::CauchyMixtureEntry>(), 16, 16, 200, 64, 4096, 1.5});
+  Run({"corner", vrlis::SegmentSamplers::Of<vrlis::CauchyMixtureEntry>(), 16, 16, 200, 64, 4096, 1.5});
 }

@@ -14,9 +14,9 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "integrand.hpp"
+#include "segment_integrand.hpp"
 
-namespace vrlis_stab {
+namespace vrlis::stability {
 
 // The integral of f over [tmin, tmax] in the angle variable: f dt = F(theta) dtheta / h with
 // F(theta) = Lobes(cos(theta) n - sin(theta) dir). Split at every place a lobe peaks or
@@ -332,4 +332,4 @@ inline std::vector<HardVrlCase> HardVrlCases() {
   return cs;
 }
 
-}  // namespace vrlis_stab
+}  // namespace vrlis::stability

@@ -22,7 +22,7 @@
 
 #include "reference.hpp"
 
-using namespace vrlis_stab;
+using namespace vrlis::stability;
 
 namespace {
 

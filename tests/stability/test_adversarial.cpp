@@ -8,11 +8,11 @@
 
 #include <vrlis/core/running_moments.hpp>
 
-#include "../lib/sampler_types.hpp"
+#include "sampler_types.hpp"
 #include "contract.hpp"
 #include "reference.hpp"
 
-using namespace vrlis_stab;
+using namespace vrlis::stability;
 
 namespace {
 
@@ -20,9 +20,9 @@ namespace {
 // library's registry.
 template <typename Real, typename F>
 void ForEachSampler(F&& f) {
-  vrlis_test::ForEachCameraSampler<Real>([&](auto tag) {
+  vrlis::test::ForEachCameraSampler<Real>([&](auto tag) {
     using S = typename decltype(tag)::type;
-    f(tag, vrlis_test::SamplerName<S>().c_str(), vrlis_test::RoundTripsPointwise<S>());
+    f(tag, vrlis::test::SamplerName<S>().c_str(), vrlis::test::RoundTripsPointwise<S>());
   });
 }
 

@@ -11,7 +11,7 @@
 // Taylor series of sin r to r^9 and of cos r to r^10 on |r| <= pi/4. Their truncation
 // errors are below the next terms, (pi/4)^11 / 11! = 1.8e-9 and (pi/4)^12 / 12! = 1.2e-10,
 // far below float's half ulp, so the error is rounding only: within 2 ulp of 1 in absolute
-// terms and relative for sin near 0 (tests/lib/sincos.cpp checks both against double over
+// terms and relative for sin near 0 (tests/lib/lane_math.cpp checks both against double over
 // |x| <= 100). Valid for |x| < 4e6 (the rounding trick below), accurate for |x| <= 1e4;
 // every caller passes angles of a few pi.
 //

@@ -32,14 +32,8 @@ Real HenyeyGreensteinPeak(Real g) {
   return (1 + a) / (4 * kPi<Real> * Sqr(1 - a));
 }
 
-// The cumulative distribution of cos, P(cos' <= cos); exact in the limit g -> 0.
-template <typename Real>
-Real InvertHenyeyGreenstein(Real g, Real cos) {
-  Real s = std::sqrt(HenyeyGreensteinBase(g, 1 - cos, 1 + cos));
-  return Clamp((1 - g) * (1 + cos) / (s * (1 + g + s)), Real(0), Real(1));
-}
-
-// Returns 1 - cos for the cos that InvertHenyeyGreenstein maps to u; precise near cos = 1.
+// Returns 1 - cos for the cos whose cumulative probability P(cos' <= cos) is u; precise
+// near cos = 1.
 template <typename Real>
 Real SampleHenyeyGreensteinOneMinusCos(Real g, Real u) {
   Real v = 1 - u;  // v = P(cos' >= cos)

@@ -44,9 +44,9 @@ Real MediumGatherIntegrand(const MediumGatherQuery<Real>& q, Real t, Real v, Rea
 // Calls f(Type<StepOneSampler>{}, Type<CameraSampler>{}) for the samplers of `method`:
 // a renderer branches on the method once, outside its loop over VRLs.
 template <typename Real, typename F>
-decltype(auto) WithGatherSamplers(GatherMethod method, F&& f) {
+decltype(auto) WithGatherSamplers(GatherSamplers method, F&& f) {
   return VrlSamplers::WithEntry(method.vrl, [&](auto vrl) {
-    return CameraSamplers::WithEntry(method.camera, [&](auto camera) {
+    return SegmentSamplers::WithEntry(method.segment, [&](auto camera) {
       return f(Type<typename decltype(vrl)::template Sampler<Real>>{},
                Type<typename decltype(camera)::template Sampler<Real>>{});
     });
@@ -125,7 +125,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 
 // The same with the samplers chosen at run time; any query (an invalid one samples nothing).
 template <typename Real>
-GatherSample<Real> SampleMediumGather(GatherMethod method, const MediumGatherQuery<Real>& q, Real u_vrl,
+GatherSample<Real> SampleMediumGather(GatherSamplers method, const MediumGatherQuery<Real>& q, Real u_vrl,
                                       Real u_camera) {
   if (Validate(q) != QueryError::None) return {};
   return WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {

@@ -29,9 +29,9 @@ Real PointLightGatherIntegrand(const PointLightGatherQuery<Real>& q, Real t, Rea
 }
 
 template <typename Real>
-GatherSample<Real> SamplePointLightGather(Method method, const PointLightGatherQuery<Real>& q, Real u) {
+GatherSample<Real> SamplePointLightGather(SegmentChoice method, const PointLightGatherQuery<Real>& q, Real u) {
   if (Validate(q) != QueryError::None) return {};
-  return CameraSamplers::With(method, ValidQuery{}, CameraStepQuery(q), [&](const auto& sampler) {
+  return SegmentSamplers::With(method, ValidQuery{}, CameraStepQuery(q), [&](const auto& sampler) {
     SegmentSample<Real> t = sampler.sample_pdf(u);
     if (!detail::Usable(t)) return GatherSample<Real>{};
     GatherSample<Real> s;

@@ -78,9 +78,9 @@ template <typename Sampler, typename Real>
 
 // The same with the sampler chosen at run time; any query (an invalid one samples nothing).
 template <typename Real>
-GatherSample<Real> SampleSurfaceGather(Method method, const SurfaceGatherQuery<Real>& q, Real u) {
+GatherSample<Real> SampleSurfaceGather(SegmentChoice method, const SurfaceGatherQuery<Real>& q, Real u) {
   if (Validate(q) != QueryError::None) return {};
-  return CameraSamplers::WithEntry(method, [&](auto entry) {
+  return SegmentSamplers::WithEntry(method, [&](auto entry) {
     return SampleSurfaceGather<typename decltype(entry)::template Sampler<Real>>(ValidQuery{}, q, u);
   });
 }

@@ -11,7 +11,7 @@
 #include "transport.hpp"
 #include "vrl.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct GatherCount {
   std::uint64_t medium_to_medium = 0, medium_to_surface = 0;
@@ -21,4 +21,4 @@ struct GatherCount {
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls, Ray ray,
                      Rng& rng, GatherCount* count);
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace vrli {
+namespace vrlis::integration {
 
 using Vec3f = vrlis::Vec3<float>;
 using vrlis::Cross;
@@ -106,4 +106,4 @@ inline Vec3f FibonacciDirection(int i, int n) {
   return SphericalDirection(Frame({0, 0, 1}), z, golden * i);
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

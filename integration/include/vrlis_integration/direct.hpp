@@ -4,7 +4,7 @@
 // In the medium, single scattering along a whole segment replaces it (gather.hpp).
 #include "scene.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 // Reflected radiance at a diffuse point p with normal nf (facing the viewer).
 inline Spectrum DirectSurface(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo) {
@@ -21,4 +21,4 @@ inline Spectrum DirectSurface(const Scene& scene, Vec3f p, Vec3f nf, Spectrum al
   return sum * albedo;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -4,7 +4,7 @@
 
 #include "common.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct Film {
   int width = 0, height = 0;
@@ -37,4 +37,4 @@ class Accumulator {
   int passes_ = 0;
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

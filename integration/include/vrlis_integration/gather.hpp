@@ -9,7 +9,7 @@
 #include "scene.hpp"
 #include "vrl.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 // The part of a camera ray inside the medium: x(u) = ray(u), u in [iv.a, iv.b]. The
 // transmittance from x(u) back to the ray origin is exp(-sigma_t (u - iv.a)).
@@ -21,13 +21,13 @@ struct CameraSegment {
 // Radiance along the camera ray from light scattered at a VRL point and again on the segment
 // (the single-VRL form of the sum below, which the comparison uses per VRL).
 // With a log, the query is offered to it with the weight throughput x flux (query_log.hpp).
-Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
 
 // The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
 // order: the camera pass's inner loop. The samplers are chosen and the camera segment and
 // medium validated once for all the VRLs.
-Spectrum GatherMediumToMedium(vrlis::GatherMethod method, const Scene& scene, const CameraSegment& seg,
+Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
                               Spectrum throughput = Spectrum(1.f));
 
@@ -38,11 +38,11 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
 // each): the sampler is chosen and the point and medium validated once for all the VRLs.
-Spectrum GatherMediumToSurface(vrlis::Method method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
+Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance).
-Spectrum SingleScattering(vrlis::Method method, const Scene& scene, const CameraSegment& seg, Rng& rng);
+Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng);
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -10,7 +10,7 @@
 
 #include "common.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct PointLight {
   Vec3f position{};
@@ -75,4 +75,4 @@ inline std::optional<LightSample> SampleLight(const CollimatedRect& l, Vec3f p) 
   return LightSample{-l.direction, *q, l.irradiance};
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -8,11 +8,11 @@
 #include "transport.hpp"
 #include "vrl.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 // `count` light paths of one pass, each starting with flux (light power / count); the VRLs
 // come out in path order, whatever the thread count.
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
                                  std::uint64_t seed, std::uint64_t pass);
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -2,7 +2,7 @@
 // Surface materials: what the scenes use and nothing more.
 #include "common.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 enum class MaterialKind { Diffuse, Mirror, Glass };
 
@@ -54,4 +54,4 @@ inline void BounceSpecular(const Material& m, Vec3f p, Vec3f n, float u, Ray* ra
   *ray = {p, d};
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

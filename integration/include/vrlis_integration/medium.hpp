@@ -4,7 +4,7 @@
 // meets the medium in one interval).
 #include "common.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct Interval {
   float a = 0, b = 0;
@@ -51,4 +51,4 @@ struct HomogeneousMedium {
   }
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -6,7 +6,7 @@
 #include "scene.hpp"
 #include "transport.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 class PathTracer {
  public:
@@ -22,4 +22,4 @@ class PathTracer {
   TransportSettings tr_;
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -30,7 +30,7 @@
 
 #include <vrlis/core/gather_query.hpp>
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct QueryRecord {
   vrlis::MediumGatherQuery<float> query;
@@ -196,4 +196,4 @@ inline std::optional<std::vector<QueryRecord>> ReadQueryLog(const std::string& p
   return records;
 }
 
-}  // namespace vrli
+}  // namespace vrlis::integration

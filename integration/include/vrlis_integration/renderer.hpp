@@ -10,7 +10,7 @@
 #include "scene.hpp"
 #include "transport.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct PassStats {
   std::uint64_t vrls = 0, gathers = 0;
@@ -53,4 +53,4 @@ class PathTracingRenderer : public Renderer {
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -8,7 +8,7 @@
 #include "material.hpp"
 #include "medium.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct SurfaceHit {
   float t = 0;
@@ -52,4 +52,4 @@ struct Scene {
   }
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -3,14 +3,14 @@
 // add up to the whole without counting a path twice).
 #include <vrlis/method.hpp>
 
-namespace vrli {
+namespace vrlis::integration {
 
 class QueryLog;
 
 struct TransportSettings {
   // How every VRL gather samples: step one and step two of the medium-to-medium gather; the
   // medium-to-surface gather and single scattering use its camera sampler.
-  vrlis::GatherMethod sampling{vrlis::CameraSamplers::Of<vrlis::NovakEntry>(), {}};
+  vrlis::GatherSamplers sampling{vrlis::SegmentSamplers::Of<vrlis::NovakEntry>(), {}};
   bool medium_to_medium = true;   // VRL gather along camera segments
   bool medium_to_surface = true;  // VRL gather at the diffuse surface ending the camera chain
   bool direct = true;             // next-event estimation at the first camera vertex
@@ -28,4 +28,4 @@ struct TransportSettings {
   QueryLog* query_log = nullptr;    // if set, records a sample of the medium-to-medium gathers
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

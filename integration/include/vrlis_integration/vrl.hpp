@@ -4,7 +4,7 @@
 // Transmittance along the VRL is not in the flux: the gathers apply T(v).
 #include "common.hpp"
 
-namespace vrli {
+namespace vrlis::integration {
 
 struct Vrl {
   Vec3f origin{}, dir{};
@@ -12,4 +12,4 @@ struct Vrl {
   Spectrum flux{};
 };
 
-}  // namespace vrli
+}  // namespace vrlis::integration

@@ -6,19 +6,19 @@
 
 #include <vrlis_integration/film.hpp>
 
-namespace vrl_render {
+namespace vrlis::scenes {
 
 // Linear float RGB OpenEXR. Return false (and remove the temporary) on failure.
-bool WriteExr(const std::string& path, const vrli::Film& film, std::string* error);
+bool WriteExr(const std::string& path, const vrlis::integration::Film& film, std::string* error);
 // An 8-bit sRGB preview of film * exposure.
-bool WritePng(const std::string& path, const vrli::Film& film, float exposure, std::string* error);
+bool WritePng(const std::string& path, const vrlis::integration::Film& film, float exposure, std::string* error);
 bool WriteText(const std::string& path, const std::string& text, std::string* error);
-std::optional<vrli::Film> ReadExr(const std::string& path, std::string* error);
+std::optional<vrlis::integration::Film> ReadExr(const std::string& path, std::string* error);
 
 // A scale that maps the 99th percentile of luminance to 0.8 (1 for a black image).
-float AutoExposure(const vrli::Film& film);
+float AutoExposure(const vrlis::integration::Film& film);
 
 // Whether a file can be created at path (tested with a temporary that is removed again).
 bool CanWrite(const std::string& path);
 
-}  // namespace vrl_render
+}  // namespace vrlis::scenes

@@ -7,7 +7,7 @@
 #include <vrlis_integration/scene.hpp>
 #include <vrlis_integration/transport.hpp>
 
-namespace vrl_render {
+namespace vrlis::scenes {
 
 inline constexpr std::array<std::string_view, 4> kSceneNames = {"bidirectional", "room", "cube", "corner"};
 
@@ -17,12 +17,12 @@ struct MediumOverrides {
 };
 
 struct BuiltScene {
-  vrli::Scene scene;
-  vrli::TransportSettings transport;  // what the scene renders by default
+  vrlis::integration::Scene scene;
+  vrlis::integration::TransportSettings transport;  // what the scene renders by default
   bool has_surfaces = true;           // false: nothing for a medium-to-surface gather to land on
 };
 
 // Empty for an unknown name.
 std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverrides& overrides);
 
-}  // namespace vrl_render
+}  // namespace vrlis::scenes

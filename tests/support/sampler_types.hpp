@@ -10,10 +10,10 @@
 
 #include <vrlis/method.hpp>
 
-namespace vrlis_test {
+namespace vrlis::test {
 
 template <typename Real>
-using CameraSamplersIn = vrlis::CameraSamplers::Samplers<Real>;
+using CameraSamplersIn = vrlis::SegmentSamplers::Samplers<Real>;
 // Every camera sampler in float and in double, for TEMPLATE_LIST_TEST_CASE.
 using CameraSamplerTypes =
     decltype(std::tuple_cat(std::declval<CameraSamplersIn<float>>(), std::declval<CameraSamplersIn<double>>()));
@@ -49,7 +49,7 @@ std::string SamplerName() {
   constexpr int camera = IndexIn<S>(static_cast<CameraSamplersIn<Real>*>(nullptr));
   constexpr int vrl = IndexIn<S>(static_cast<vrlis::VrlSamplers::Samplers<Real>*>(nullptr));
   static_assert(camera >= 0 || vrl >= 0, "not a registered sampler");
-  if constexpr (camera >= 0) return std::string(vrlis::CameraSamplers::kNames[camera]);
+  if constexpr (camera >= 0) return std::string(vrlis::SegmentSamplers::kNames[camera]);
   else return std::string(vrlis::VrlSamplers::kNames[vrl]);
 }
 
@@ -58,4 +58,4 @@ std::string SamplerName() {
 template <typename S>
 constexpr bool RoundTripsPointwise() { return !std::is_same_v<S, vrlis::CauchyMixture<typename S::Real>>; }
 
-}  // namespace vrlis_test
+}  // namespace vrlis::test

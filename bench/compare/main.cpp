@@ -26,10 +26,10 @@
 
 namespace {
 
-using vrl_compare::DecomposeResult;
-using vrl_compare::SamplerName;
-using vrl_compare::StudyConfig;
-using vrl_compare::StudyResult;
+using vrlis::compare::DecomposeResult;
+using vrlis::compare::SamplerName;
+using vrlis::compare::StudyConfig;
+using vrlis::compare::StudyResult;
 
 int Fail(const std::string& message) {
   std::fprintf(stderr, "vrl_compare: %s\n", message.c_str());
@@ -42,24 +42,24 @@ std::string StudyName(const StudyConfig& c) {
   return s.str();
 }
 
-nlohmann::json ToJson(const vrl_compare::RatioInterval& r) {
+nlohmann::json ToJson(const vrlis::compare::RatioInterval& r) {
   return {{"point", r.point}, {"low", r.low}, {"high", r.high}};
 }
-nlohmann::json ToJson(const vrl_compare::Estimate& e) { return {{"value", e.value}, {"se", e.standard_error}}; }
+nlohmann::json ToJson(const vrlis::compare::Estimate& e) { return {{"value", e.value}, {"se", e.standard_error}}; }
 
 bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error) {
   const StudyConfig& c = r.config;
   std::filesystem::create_directories(dir);
   nlohmann::json samplers = nlohmann::json::array();
-  vrli::Film reference = vrl_compare::ToFilm(r.reference_image, c.width, c.height);
-  float exposure = vrl_render::AutoExposure(reference);
+  vrlis::integration::Film reference = vrlis::compare::ToFilm(r.reference_image, c.width, c.height);
+  float exposure = vrlis::scenes::AutoExposure(reference);
   for (const auto& s : r.samplers) {
     samplers.push_back({{"sampler", SamplerName(s.sampler)}, {"passes", s.passes}, {"seconds_per_pass", s.seconds},
                         {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_novak", ToJson(s.to_baseline)},
                         {"error_to_noise", s.error_to_noise}, {"verdict", s.verdict},
                         {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}}});
-    if (!vrl_render::WritePng(dir + "/" + SamplerName(s.sampler) + ".png",
-                              vrl_compare::ToFilm(s.image, c.width, c.height), exposure, error))
+    if (!vrlis::scenes::WritePng(dir + "/" + SamplerName(s.sampler) + ".png",
+                              vrlis::compare::ToFilm(s.image, c.width, c.height), exposure, error))
       return false;
   }
   nlohmann::json mixture = nlohmann::json::array();
@@ -72,11 +72,11 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
                       {"reference", {{"mixture", mixture}, {"passes", r.reference_passes},
                                      {"seconds", r.reference_seconds}, {"cached", r.reference_cached},
                                      {"noise", r.reference_noise}}}};
-  return vrl_render::WritePng(dir + "/reference.png", reference, exposure, error) &&
-         vrl_render::WriteText(dir + "/result.json", j.dump(2) + "\n", error);
+  return vrlis::scenes::WritePng(dir + "/reference.png", reference, exposure, error) &&
+         vrlis::scenes::WriteText(dir + "/result.json", j.dump(2) + "\n", error);
 }
 
-std::string Interval(const vrl_compare::RatioInterval& r) {
+std::string Interval(const vrlis::compare::RatioInterval& r) {
   char s[96];
   std::snprintf(s, sizeof s, "%.2f (%.2f-%.2f)", r.point, r.low, r.high);
   return s;
@@ -167,16 +167,16 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (full) {
-    if (app.count("--scenes") == 0) scenes.assign(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end());
+    if (app.count("--scenes") == 0) scenes.assign(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end());
     if (app.count("--g") == 0) gs = {-0.9f, -0.5f, 0.f, 0.5f, 0.9f};
     if (app.count("--budget") == 0) base.budget = 12;
   }
   if (decompose && app.count("--scenes") == 0)
-    scenes.assign(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end());
+    scenes.assign(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end());
 
   // Every argument is checked here, before anything is written.
   for (const std::string& s : scenes)
-    if (std::find(vrl_render::kSceneNames.begin(), vrl_render::kSceneNames.end(), s) == vrl_render::kSceneNames.end())
+    if (std::find(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end(), s) == vrlis::scenes::kSceneNames.end())
       return Fail("unknown scene '" + s + "' (bidirectional, room, cube, corner)");
   if (scenes.empty() || gs.empty()) return Fail("--scenes and --g need at least one value");
   for (float g : gs)
@@ -192,15 +192,15 @@ int main(int argc, char** argv) {
     return Fail("--width and --height must be in [1, 8192]");
   if (base.vrls <= 0 || threads <= 0) return Fail("--vrls and --threads must be positive");
   if (sampler_names.empty())
-    base.samplers = vrl_compare::AllSamplers();
+    base.samplers = vrlis::compare::AllSamplers();
   for (const std::string& s : sampler_names) {
-    auto m = vrl_compare::ParseSampler(s);
+    auto m = vrlis::compare::ParseSampler(s);
     if (!m) return Fail("unknown sampler '" + s + "'");
     if (std::find(base.samplers.begin(), base.samplers.end(), *m) != base.samplers.end())
       return Fail("sampler '" + s + "' given twice");
     base.samplers.push_back(*m);
   }
-  if (std::find(base.samplers.begin(), base.samplers.end(), vrl_compare::kBaseline) == base.samplers.end() ||
+  if (std::find(base.samplers.begin(), base.samplers.end(), vrlis::compare::kBaseline) == base.samplers.end() ||
       base.samplers.size() < 2)
     return Fail("--samplers must name novak (every ratio is to it) and at least one other");
   if (std::set<float>(gs.begin(), gs.end()).size() != gs.size() ||
@@ -209,7 +209,7 @@ int main(int argc, char** argv) {
   {
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
-    if (ec || !vrl_render::CanWrite(out + "/.probe")) return Fail("cannot write to output folder '" + out + "'");
+    if (ec || !vrlis::scenes::CanWrite(out + "/.probe")) return Fail("cannot write to output folder '" + out + "'");
   }
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   std::string error;
@@ -219,7 +219,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(out + "/decompose");
     try {
       for (const std::string& scene : scenes) {
-        vrl_compare::DecomposeConfig c;
+        vrlis::compare::DecomposeConfig c;
         c.scene = scene;
         c.width = base.width;
         c.height = base.height;
@@ -230,15 +230,15 @@ int main(int argc, char** argv) {
         c.seed = base.seed;
         std::fprintf(stderr, "%s: decomposing (%.3g s parts, %.3g s steps) ...\n", scene.c_str(), c.budget,
                      c.step_budget);
-        nlohmann::json j = DecompositionJson(vrl_compare::Decompose(c));
-        if (!vrl_render::WriteText(out + "/decompose/" + scene + ".json", j.dump(2) + "\n", &error)) return Fail(error);
+        nlohmann::json j = DecompositionJson(vrlis::compare::Decompose(c));
+        if (!vrlis::scenes::WriteText(out + "/decompose/" + scene + ".json", j.dump(2) + "\n", &error)) return Fail(error);
         std::printf("%s\n", j.dump().c_str());
         index.push_back(scene);
       }
     } catch (const std::exception& e) {
       return Fail(e.what());
     }
-    if (!vrl_render::WriteText(out + "/decompose/scenes.json", index.dump(2) + "\n", &error)) return Fail(error);
+    if (!vrlis::scenes::WriteText(out + "/decompose/scenes.json", index.dump(2) + "\n", &error)) return Fail(error);
     return 0;
   }
 
@@ -254,7 +254,7 @@ int main(int argc, char** argv) {
         c.g = g;
         std::fprintf(stderr, "%s: %zu samplers x >= %.3g s in %d replicates, reference %.3g s ...\n",
                      StudyName(c).c_str(), c.samplers.size(), c.budget, c.replicates, c.reference_seconds);
-        results.push_back(vrl_compare::RunStudy(c));
+        results.push_back(vrlis::compare::RunStudy(c));
         if (!WriteStudy(results.back(), out + "/" + StudyName(c), &error)) return Fail(error);
         resolution += Resolution(results.back());
         std::fprintf(stderr, "%s", Resolution(results.back()).c_str());
@@ -265,9 +265,9 @@ int main(int argc, char** argv) {
   std::string table = SummaryTable(results);
   nlohmann::json all = nlohmann::json::array();
   for (const auto& r : results) all.push_back(StudyName(r.config));
-  if (!vrl_render::WriteText(out + "/summary.md", table, &error) ||
-      !vrl_render::WriteText(out + "/resolution.txt", resolution, &error) ||
-      !vrl_render::WriteText(out + "/studies.json", all.dump(2) + "\n", &error))
+  if (!vrlis::scenes::WriteText(out + "/summary.md", table, &error) ||
+      !vrlis::scenes::WriteText(out + "/resolution.txt", resolution, &error) ||
+      !vrlis::scenes::WriteText(out + "/studies.json", all.dump(2) + "\n", &error))
     return Fail(error);
   std::printf("%s\n%s", table.c_str(), resolution.c_str());
   return 0;

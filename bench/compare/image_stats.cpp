@@ -1,16 +1,16 @@
 #include "image_stats.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
-vrli::Film ToFilm(const std::vector<double>& rgb, int width, int height) {
-  vrli::Film film(width, height);
+vrlis::integration::Film ToFilm(const std::vector<double>& rgb, int width, int height) {
+  vrlis::integration::Film film(width, height);
   for (std::size_t i = 0; i < film.pixels.size(); ++i)
     film.pixels[i] = {static_cast<float>(rgb[3 * i]), static_cast<float>(rgb[3 * i + 1]),
                       static_cast<float>(rgb[3 * i + 2])};
   return film;
 }
 
-std::vector<double> FromFilm(const vrli::Film& film) {
+std::vector<double> FromFilm(const vrlis::integration::Film& film) {
   std::vector<double> rgb(3 * film.pixels.size());
   for (std::size_t i = 0; i < film.pixels.size(); ++i) {
     rgb[3 * i] = film.pixels[i].r;
@@ -20,4 +20,4 @@ std::vector<double> FromFilm(const vrli::Film& film) {
   return rgb;
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

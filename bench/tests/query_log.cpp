@@ -18,7 +18,7 @@
 
 namespace {
 
-using vrli::QueryRecord;
+using vrlis::integration::QueryRecord;
 
 std::vector<QueryRecord> RandomRecords(int n) {
   std::vector<QueryRecord> out;
@@ -30,7 +30,7 @@ std::vector<QueryRecord> RandomRecords(int n) {
 }
 
 bool SameBits(const QueryRecord& a, const QueryRecord& b) {
-  auto fa = vrli::query_log::Flatten(a), fb = vrli::query_log::Flatten(b);
+  auto fa = vrlis::integration::query_log::Flatten(a), fb = vrlis::integration::query_log::Flatten(b);
   return std::memcmp(fa.data(), fb.data(), sizeof fa) == 0;
 }
 
@@ -44,8 +44,8 @@ TEST_CASE("a query log reads back what was written, unbounded segments included"
   for (const QueryRecord& r : records) unbounded = unbounded || std::isinf(r.query.camera.tmax);
   REQUIRE(unbounded);
   std::string path = TempPath("roundtrip"), error;
-  REQUIRE(vrli::WriteQueryLog(path, records, &error));
-  auto read = vrli::ReadQueryLog(path, &error);
+  REQUIRE(vrlis::integration::WriteQueryLog(path, records, &error));
+  auto read = vrlis::integration::ReadQueryLog(path, &error);
   REQUIRE(read);
   REQUIRE(read->size() == records.size());
   for (std::size_t i = 0; i < records.size(); ++i) CHECK(SameBits((*read)[i], records[i]));
@@ -55,7 +55,7 @@ TEST_CASE("a query log reads back what was written, unbounded segments included"
 TEST_CASE("a damaged query log is refused with a message", "[query_log]") {
   std::vector<QueryRecord> records = RandomRecords(3);
   std::string path = TempPath("damaged"), error;
-  REQUIRE(vrli::WriteQueryLog(path, records, &error));
+  REQUIRE(vrlis::integration::WriteQueryLog(path, records, &error));
   std::string bytes;
   {
     std::ifstream f(path, std::ios::binary);
@@ -64,7 +64,7 @@ TEST_CASE("a damaged query log is refused with a message", "[query_log]") {
   auto reject = [&](std::string content) {
     std::ofstream(path, std::ios::binary | std::ios::trunc) << content;
     std::string e;
-    bool refused = !vrli::ReadQueryLog(path, &e);
+    bool refused = !vrlis::integration::ReadQueryLog(path, &e);
     INFO(e);
     return refused && !e.empty();
   };
@@ -76,7 +76,7 @@ TEST_CASE("a damaged query log is refused with a message", "[query_log]") {
   std::memcpy(&nan[16], &x, 4);                            // a NaN camera origin
   CHECK(reject(nan));
   std::string error2;
-  CHECK(!vrli::ReadQueryLog(TempPath("missing"), &error2));
+  CHECK(!vrlis::integration::ReadQueryLog(TempPath("missing"), &error2));
   CHECK(!error2.empty());
   std::remove(path.c_str());
 }
@@ -84,7 +84,7 @@ TEST_CASE("a damaged query log is refused with a message", "[query_log]") {
 TEST_CASE("the recorder keeps one query in K, the same ones in any order", "[query_log]") {
   const int n = 20000, every = 50;
   std::vector<QueryRecord> records = RandomRecords(n);
-  vrli::QueryLog forward(every), backward(every);
+  vrlis::integration::QueryLog forward(every), backward(every);
   for (const QueryRecord& r : records) forward.Record(r.query, r.weight);
   for (auto it = records.rbegin(); it != records.rend(); ++it) backward.Record(it->query, it->weight);
   auto a = forward.Records(), b = backward.Records();
@@ -94,7 +94,7 @@ TEST_CASE("the recorder keeps one query in K, the same ones in any order", "[que
   double mean = double(n) / every, sd = std::sqrt(mean * (1 - 1.0 / every));
   CHECK(std::abs(double(a.size()) - mean) < 5 * sd);
   // An invalid query or weight is never kept.
-  vrli::QueryLog all(1);
+  vrlis::integration::QueryLog all(1);
   QueryRecord bad = records[0];
   bad.query.medium.g = 1;
   all.Record(bad.query, 1);

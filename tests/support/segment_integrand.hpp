@@ -8,7 +8,7 @@
 
 #include <vrlis/vrlis.hpp>
 
-namespace vrlis_stab {
+namespace vrlis::stability {
 
 using V3 = vrlis::Vec3<double>;
 constexpr double kPi = 3.14159265358979323846;
@@ -101,4 +101,4 @@ struct RefQuery {
   }
 };
 
-}  // namespace vrlis_stab
+}  // namespace vrlis::stability

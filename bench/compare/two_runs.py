@@ -2,7 +2,7 @@
 """Whether two runs of the default study (different seeds) give the same verdicts: per study,
 the "best" sampler or the samplers tied with the winner, from each run's result.json, and
 both runs' tables (summary.md) and resolution lines. Writes Markdown to stdout.
-Usage: compare/two_runs.py RUN1_DIR RUN2_DIR"""
+Usage: bench/compare/two_runs.py RUN1_DIR RUN2_DIR"""
 import json
 import os
 import sys
@@ -27,7 +27,7 @@ def read(path):
 
 def main():
     if len(sys.argv) != 3:
-        sys.exit("usage: compare/two_runs.py RUN1_DIR RUN2_DIR")
+        sys.exit("usage: bench/compare/two_runs.py RUN1_DIR RUN2_DIR")
     runs = sys.argv[1:]
     names = studies(runs[0])
     if names != studies(runs[1]):

@@ -12,7 +12,7 @@
 #include "efficiency.hpp"
 #include "render_call.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 struct StudyConfig {
   std::string scene;
@@ -28,13 +28,13 @@ struct StudyConfig {
   // up to this multiple of the budget.
   double extension = 2;
   double reference_seconds = 15;  // for the mixture reference, all samplers together
-  std::vector<Sampler> samplers;  // includes kBaseline
+  std::vector<GatherSamplers> samplers;  // includes kBaseline
   std::uint64_t seed = 1;
   std::string reference_dir;      // shared cache of references
 };
 
 struct SamplerResult {
-  Sampler sampler{};
+  GatherSamplers sampler{};
   int passes = 0;  // over all replicates
   Replicates replicates;
   double variance = 0, seconds = 0, efficiency = 0;  // pooled over the replicates
@@ -64,4 +64,4 @@ struct StudyResult {
 // Throws std::invalid_argument for an unknown scene.
 StudyResult RunStudy(const StudyConfig& config);
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

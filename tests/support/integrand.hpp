@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace vrlis_test {
+namespace vrlis::test {
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -254,4 +254,4 @@ inline std::vector<Config> ConfigsFor(double g) {
   return out;
 }
 
-}  // namespace vrlis_test
+}  // namespace vrlis::test

@@ -39,7 +39,7 @@ McMoments RunMc(std::uint64_t seed, int n, const std::function<std::pair<double,
 
 // The k-th camera sampler of the registry in double: a sample u and its density p(u).
 std::pair<double, double> SampleCamera(int k, const SegmentQuery<double>& q, double xi) {
-  return CameraSamplers::With(kMethods[k], q, [&](const auto& sampler) {
+  return SegmentSamplers::With(kSegmentSamplers[k], q, [&](const auto& sampler) {
     double u = sampler.sample(xi);
     return std::pair{u, sampler.pdf(u)};
   });
@@ -81,7 +81,7 @@ TEST_CASE("quadrature of the relative variance matches Monte Carlo", "[accuracy]
       for (int k = 0; k < kCameraSamplerCount; ++k) {
         std::uint64_t seed = 1000 * pi + 10 * k + std::uint64_t(100 * (g + 1));
         McMoments w = WholeMc(p.query, k, n, seed), c = CameraMc(p, k, n, seed + 7);
-        INFO("g = " << g << ", configuration " << pi << ", " << Name(kMethods[k]));
+        INFO("g = " << g << ", configuration " << pi << ", " << Name(kSegmentSamplers[k]));
         INFO("whole: relvar quadrature " << whole.RelativeVariance(k) << ", Monte Carlo "
                                          << w.second / (w.mean * w.mean) - 1);
         INFO("camera: relvar quadrature " << camera.RelativeVariance(k) << ", Monte Carlo "
@@ -137,7 +137,7 @@ TEST_CASE("the quadrature is converged at g = +-0.99", "[accuracy]") {
       REQUIRE(a.converged);
       REQUIRE(b.converged);
       for (int k = 0; k < kCameraSamplerCount; ++k) {
-        INFO("g = " << g << ", " << Name(kMethods[k]));
+        INFO("g = " << g << ", " << Name(kSegmentSamplers[k]));
         CHECK(a.RelativeVariance(k) == Approx(b.RelativeVariance(k)).epsilon(1e-4));
         CHECK(ca.RelativeVariance(k) == Approx(cb.RelativeVariance(k)).epsilon(1e-6).margin(1e-12));
         // The central form agrees with second / first^2 - 1 (which loses digits near 0).
@@ -155,7 +155,7 @@ TEST_CASE("at g = 0 every phase-only camera sampler is equiangular", "[accuracy]
   for (const Config<double>& p : MakeConfigs(kDefaultSeed, 8, 0.0)) {
     Moments m = WholeMoments(p.query);
     for (int k = 1; k <= 3; ++k) CHECK(m.RelativeVariance(k) == Approx(m.RelativeVariance(0)).epsilon(1e-6));
-    CHECK(Name(kMethods[4]) == "full-product");
+    CHECK(Name(kSegmentSamplers[4]) == "full-product");
     full += m.RelativeVariance(4);
     equiangular += m.RelativeVariance(0);
   }

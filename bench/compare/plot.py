@@ -27,7 +27,7 @@ import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker as ticker  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from samplers import style  # noqa: E402
 
 PART_COLOURS = {
@@ -160,9 +160,30 @@ def publish_study(out, names, results, folder, command):
     update_readme(provenance(command), table)
 
 
+def verdict_table(table):
+    """The README's one table, from the study's summary table: per scene and g, the sampler
+    called best, or every sampler in the tie, with its efficiency over Novak's."""
+    rows = [[c.strip() for c in line.strip().strip("|").split("|")] for line in table.splitlines()
+            if line.startswith("|") and not line.startswith("|---")]
+    head, rows = rows[0], rows[1:]
+    col = {name: i for i, name in enumerate(head)}
+    efficiency = next(name for name in head if name.startswith("efficiency"))
+    studies = {}
+    for r in rows:
+        studies.setdefault((r[col["scene"]], r[col["g"]]), []).append(r)
+    lines = [f"| scene | g | verdict | sampler: {efficiency} |", "|---|---|---|---|"]
+    for (scene, g), rs in studies.items():
+        winners = [r for r in rs if r[col["verdict"]] in ("best", "tie")]
+        verdict = winners[0][col["verdict"]] if winners else "none"
+        cells = "; ".join(f"{r[col['sampler']]}: {r[col[efficiency]]}" for r in winners)
+        lines.append(f"| {scene} | {g} | {verdict} | {cells} |")
+    return "\n".join(lines) + "\n"
+
+
 def update_readme(provenance_line, table, readme="README.md"):
     """Replaces the block between the compare-summary markers of the project README with the
-    table just measured, so the README never quotes a table no command made."""
+    verdicts of the table just measured (verdict_table), so the README never quotes a table no
+    command made; docs/compare/results.md keeps the whole table."""
     begin, end = "<!-- compare-summary -->", "<!-- /compare-summary -->"
     if not os.path.exists(readme):
         return
@@ -170,7 +191,7 @@ def update_readme(provenance_line, table, readme="README.md"):
         text = f.read()
     if begin not in text or end not in text:
         return
-    block = f"{begin}\n{provenance_line}\n\n{table}{end}"
+    block = f"{begin}\n{provenance_line}\n\n{verdict_table(table)}{end}"
     text = text[: text.index(begin)] + block + text[text.index(end) + len(end):]
     with open(readme, "w") as f:
         f.write(text)

@@ -5,7 +5,7 @@
 // (docs/compare/README.md says why this and not a bootstrap over passes).
 #include <vector>
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 // One sampler's replicates, all of the same number of passes: per replicate, the per-pass
 // variance (mean over pixels) and the mean seconds per pass.
@@ -27,4 +27,4 @@ double Efficiency(const Replicates& r);
 // (the pairing is what makes the interval narrow) and hold at least 3 replicates.
 RatioInterval EfficiencyRatio(const Replicates& a, const Replicates& b, double confidence = 0.95);
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

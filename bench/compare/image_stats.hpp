@@ -8,11 +8,11 @@
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis_integration/film.hpp>
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 // A pass as RGB doubles, pixel by pixel.
-std::vector<double> FromFilm(const vrli::Film& film);
-vrli::Film ToFilm(const std::vector<double>& rgb, int width, int height);
+std::vector<double> FromFilm(const vrlis::integration::Film& film);
+vrlis::integration::Film ToFilm(const std::vector<double>& rgb, int width, int height);
 
 class PassStatistics {
  public:
@@ -22,7 +22,7 @@ class PassStatistics {
     for (std::size_t i = 0; i < pass.size(); ++i) values_[i].add(pass[i]);
     ++passes_;
   }
-  void Add(const vrli::Film& pass) { Add(FromFilm(pass)); }
+  void Add(const vrlis::integration::Film& pass) { Add(FromFilm(pass)); }
 
   int passes() const { return passes_; }
 
@@ -50,4 +50,4 @@ class PassStatistics {
   int passes_ = 0;
 };
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

@@ -9,7 +9,7 @@
 #include <vrlis_scenes/image_io.hpp>
 #include "image_stats.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 namespace {
 
@@ -20,8 +20,8 @@ std::optional<Reference> LoadCached(const std::filesystem::path& base, const std
   nlohmann::json j = nlohmann::json::parse(meta, nullptr, false);
   if (j.is_discarded() || j.value("key", "") != key) return std::nullopt;
   std::string error;
-  auto mean = vrl_render::ReadExr(base.string() + ".exr", &error);
-  auto var = vrl_render::ReadExr(base.string() + ".variance.exr", &error);
+  auto mean = vrlis::scenes::ReadExr(base.string() + ".exr", &error);
+  auto var = vrlis::scenes::ReadExr(base.string() + ".variance.exr", &error);
   if (!mean || !var || mean->width != width || mean->height != height || var->width != width || var->height != height)
     return std::nullopt;
   Reference r;
@@ -35,18 +35,18 @@ std::optional<Reference> LoadCached(const std::filesystem::path& base, const std
 
 void Store(const std::filesystem::path& base, const std::string& key, const Reference& r, int width, int height) {
   std::string error;
-  if (!vrl_render::WriteExr(base.string() + ".exr", ToFilm(r.mean, width, height), &error) ||
-      !vrl_render::WriteExr(base.string() + ".variance.exr", ToFilm(r.variance_of_mean, width, height), &error))
+  if (!vrlis::scenes::WriteExr(base.string() + ".exr", ToFilm(r.mean, width, height), &error) ||
+      !vrlis::scenes::WriteExr(base.string() + ".variance.exr", ToFilm(r.variance_of_mean, width, height), &error))
     throw std::runtime_error("cannot write reference " + base.string() + ": " + error);
   nlohmann::json j = {{"key", key}, {"passes", r.passes}, {"seconds", r.seconds}};
   // Written last: a reference counts as cached only once its images are complete.
-  if (!vrl_render::WriteText(base.string() + ".json", j.dump(2) + "\n", &error))
+  if (!vrlis::scenes::WriteText(base.string() + ".json", j.dump(2) + "\n", &error))
     throw std::runtime_error("cannot write reference metadata: " + error);
 }
 
 }  // namespace
 
-Reference GetReference(PassRenderer& renderer, const std::vector<Sampler>& mixture, double seconds,
+Reference GetReference(PassRenderer& renderer, const std::vector<GatherSamplers>& mixture, double seconds,
                        const std::string& dir, const std::string& name, const std::string& key, int width, int height) {
   std::filesystem::create_directories(dir);
   std::filesystem::path base = std::filesystem::path(dir) / name;
@@ -57,7 +57,7 @@ Reference GetReference(PassRenderer& renderer, const std::vector<Sampler>& mixtu
   double elapsed = 0;
   // Whole rounds, so that every sampler holds the same share of the mixture.
   while (elapsed < seconds || stats.passes() < 2 * static_cast<int>(mixture.size())) {
-    for (Sampler s : mixture) {
+    for (GatherSamplers s : mixture) {
       double t = 0;
       stats.Add(renderer.Render(s, seed, static_cast<std::uint64_t>(stats.passes()), &t));
       elapsed += t;
@@ -68,4 +68,4 @@ Reference GetReference(PassRenderer& renderer, const std::vector<Sampler>& mixtu
   return r;
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

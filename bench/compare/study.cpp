@@ -8,15 +8,15 @@
 #include "reference.hpp"
 #include "study_scene.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 namespace {
 
 // Everything a reference image depends on; a cached one is reused only if this matches.
-std::string ReferenceKey(const StudyConfig& c, const vrli::TransportSettings& t) {
+std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::TransportSettings& t) {
   std::ostringstream key;
   key << "v2 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
       << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " samplers=";
-  for (Sampler s : c.samplers) key << SamplerName(s) << ",";
+  for (GatherSamplers s : c.samplers) key << SamplerName(s) << ",";
   key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect
       << t.light_caustics << t.first_segment_only << "/" << t.max_depth << "/" << t.rr_depth;
   return key.str();
@@ -27,7 +27,7 @@ double MeanOf(const std::vector<double>& x) {
 }
 
 struct Runner {
-  Sampler sampler;
+  GatherSamplers sampler;
   std::vector<PassStatistics> replicates;
   PassStatistics all;
   std::vector<double> seconds;  // per replicate
@@ -78,7 +78,7 @@ void Decide(StudyResult& r, double margin) {
 }  // namespace
 
 StudyResult RunStudy(const StudyConfig& config) {
-  vrl_render::MediumOverrides overrides;
+  vrlis::scenes::MediumOverrides overrides;
   overrides.g = config.g;
   const StudyScene scene = BuildStudyScene(config.scene, overrides, config.width, config.height, config.vrls);
   PassRenderer renderer(scene.built.scene, scene.settings);
@@ -92,9 +92,9 @@ StudyResult RunStudy(const StudyConfig& config) {
                    ReferenceKey(config, scene.settings.transport), config.width, config.height);
 
   std::vector<std::uint64_t> seeds(replicates);
-  for (std::size_t r = 0; r < replicates; ++r) seeds[r] = vrli::SplitMix64(config.seed * 1000003 + r);
+  for (std::size_t r = 0; r < replicates; ++r) seeds[r] = vrlis::integration::SplitMix64(config.seed * 1000003 + r);
   std::vector<Runner> runners;
-  for (Sampler s : config.samplers)
+  for (GatherSamplers s : config.samplers)
     runners.push_back({s, std::vector<PassStatistics>(replicates, PassStatistics(values)), PassStatistics(values),
                        std::vector<double>(replicates, 0.0)});
 
@@ -162,4 +162,4 @@ StudyResult RunStudy(const StudyConfig& config) {
   return out;
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

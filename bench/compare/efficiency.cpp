@@ -6,7 +6,7 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
-namespace vrl_compare {
+namespace vrlis::compare {
 namespace {
 
 double MeanWithout(const std::vector<double>& x, std::size_t skip) {
@@ -45,4 +45,4 @@ RatioInterval EfficiencyRatio(const Replicates& a, const Replicates& b, double c
   return {std::exp(whole), std::exp(whole - half), std::exp(whole + half)};
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

@@ -13,7 +13,7 @@
 #include "image_stats.hpp"
 #include "study_scene.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 namespace {
 
 // One quantity's passes in batches (replicates with their own seeds): the per-pass
@@ -47,7 +47,7 @@ class Batched {
 std::vector<std::uint64_t> Seeds(const DecomposeConfig& c) {
   std::vector<std::uint64_t> seeds;
   for (int r = 0; r < c.replicates; ++r)
-    seeds.push_back(vrli::SplitMix64(c.seed * 1000003 + static_cast<std::uint64_t>(r) + 0xDEC0ull));
+    seeds.push_back(vrlis::integration::SplitMix64(c.seed * 1000003 + static_cast<std::uint64_t>(r) + 0xDEC0ull));
   return seeds;
 }
 
@@ -64,35 +64,35 @@ struct Part {
   bool difference;
 };
 
-void RenderParts(const vrli::Scene& scene, const vrli::RenderSettings& whole, const DecomposeConfig& c,
+void RenderParts(const vrlis::integration::Scene& scene, const vrlis::integration::RenderSettings& whole, const DecomposeConfig& c,
                  DecomposeResult* out) {
-  const vrli::TransportSettings& t = whole.transport;
+  const vrlis::integration::TransportSettings& t = whole.transport;
   std::vector<Variant> variants;
   auto add = [&](const std::string& name, auto&& edit) {
-    vrli::RenderSettings s = whole;
+    vrlis::integration::RenderSettings s = whole;
     s.transport.medium_to_medium = s.transport.medium_to_surface = s.transport.direct = s.transport.indirect = false;
     edit(s.transport);
     variants.push_back({name, std::make_unique<PassRenderer>(scene, s), 0});
     return variants.size() - 1;
   };
-  const std::size_t all = add("all", [&](vrli::TransportSettings& x) { x = t; });
-  const std::size_t none = add("none", [](vrli::TransportSettings&) {});
+  const std::size_t all = add("all", [&](vrlis::integration::TransportSettings& x) { x = t; });
+  const std::size_t none = add("none", [](vrlis::integration::TransportSettings&) {});
   std::vector<Part> parts;
   if (t.medium_to_medium)
-    parts.push_back({"medium-to-medium", add("m2m", [](vrli::TransportSettings& x) { x.medium_to_medium = true; }), none, false});
+    parts.push_back({"medium-to-medium", add("m2m", [](vrlis::integration::TransportSettings& x) { x.medium_to_medium = true; }), none, false});
   if (t.medium_to_surface)
-    parts.push_back({"medium-to-surface", add("m2s", [](vrli::TransportSettings& x) { x.medium_to_surface = true; }), none, false});
+    parts.push_back({"medium-to-surface", add("m2s", [](vrlis::integration::TransportSettings& x) { x.medium_to_surface = true; }), none, false});
   if (t.direct) {
-    std::size_t surface = add("direct", [](vrli::TransportSettings& x) {
+    std::size_t surface = add("direct", [](vrlis::integration::TransportSettings& x) {
       x.direct = true;
       x.single_scattering = false;
     });
-    std::size_t both = add("direct+single", [](vrli::TransportSettings& x) { x.direct = x.single_scattering = true; });
+    std::size_t both = add("direct+single", [](vrlis::integration::TransportSettings& x) { x.direct = x.single_scattering = true; });
     if (t.single_scattering) parts.push_back({"single scattering", both, surface, true});
     parts.push_back({"direct", surface, none, false});
   }
   if (t.indirect)
-    parts.push_back({"remainder", add("remainder", [](vrli::TransportSettings& x) { x.indirect = true; }), none, false});
+    parts.push_back({"remainder", add("remainder", [](vrlis::integration::TransportSettings& x) { x.indirect = true; }), none, false});
 
   const std::size_t values = 3 * static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height);
   const auto batches = static_cast<std::size_t>(c.replicates);
@@ -136,41 +136,41 @@ void RenderParts(const vrli::Scene& scene, const vrli::RenderSettings& whole, co
 // ratio it leaves is nearly flat).
 constexpr int kNodesU = 24, kNodesV = 12;
 
-void Put(vrli::Spectrum s, std::size_t pixel, std::vector<double>* rgb) {
+void Put(vrlis::integration::Spectrum s, std::size_t pixel, std::vector<double>* rgb) {
   (*rgb)[3 * pixel] = s.r;
   (*rgb)[3 * pixel + 1] = s.g;
   (*rgb)[3 * pixel + 2] = s.b;
 }
 
-vrli::Spectrum StepTwoByQuadrature(const vrli::Scene& scene, const vrli::CameraSegment& seg, const vrli::Vrl& vrl,
+vrlis::integration::Spectrum StepTwoByQuadrature(const vrlis::integration::Scene& scene, const vrlis::integration::CameraSegment& seg, const vrlis::integration::Vrl& vrl,
                                    float v) {
-  const vrli::HomogeneousMedium& m = scene.medium;
-  const vrli::Vec3f y = vrl.origin + v * vrl.dir;
+  const vrlis::integration::HomogeneousMedium& m = scene.medium;
+  const vrlis::integration::Vec3f y = vrl.origin + v * vrl.dir;
   vrlis::FullProduct<float> warp(
       vrlis::MediumToMediumQuery(seg.ray.o, seg.ray.d, seg.iv.a, seg.iv.b, y, vrl.dir, m.g, m.SigmaT()));
-  vrli::Spectrum sum;
+  vrlis::integration::Spectrum sum;
   if (!warp.valid()) return sum;
   for (int i = 0; i < kNodesU; ++i) {
     float t = warp.sample((i + 0.5f) / kNodesU), p = warp.pdf(t);
-    if (p > 0 && std::isfinite(p)) sum += vrli::MediumToMediumIntegrand(scene, seg, vrl, v, t) * (1 / p);
+    if (p > 0 && std::isfinite(p)) sum += vrlis::integration::MediumToMediumIntegrand(scene, seg, vrl, v, t) * (1 / p);
   }
   return sum * (1.f / kNodesU);
 }
 
-vrlis::VrlPoint<float> StepOne(const vrli::CameraSegment& seg, const vrli::Vrl& vrl) {
+vrlis::VrlPoint<float> StepOne(const vrlis::integration::CameraSegment& seg, const vrlis::integration::Vrl& vrl) {
   return vrlis::VrlPoint<float>(vrlis::VrlPointQuery<float>{vrl.origin, vrl.dir, 0, vrl.length, seg.ray.o, seg.ray.d});
 }
 
-void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, const DecomposeConfig& c,
+void SplitSteps(const vrlis::integration::Scene& scene, const vrlis::integration::RenderSettings& settings, const DecomposeConfig& c,
                 DecomposeResult* out) {
   // Pixels whose centre sees the medium; each pass jitters its ray inside the pixel as the
   // renderer does, so the pixel filter's share is in the light paths' column.
   std::vector<std::pair<int, int>> pixels;
   auto segment = [&](float x, float y) {
-    vrli::Ray ray = scene.camera.Generate(x, y, c.width, c.height);
-    vrli::SurfaceHit hit;
+    vrlis::integration::Ray ray = scene.camera.Generate(x, y, c.width, c.height);
+    vrlis::integration::SurfaceHit hit;
     bool found = scene.Intersect(ray, &hit);
-    return vrli::CameraSegment{ray, scene.medium.Clip(ray, found ? hit.t : vrli::kInfinity)};
+    return vrlis::integration::CameraSegment{ray, scene.medium.Clip(ray, found ? hit.t : vrlis::integration::kInfinity)};
   };
   for (int y = 0; y < c.height; ++y)
     for (int x = 0; x < c.width; ++x)
@@ -191,21 +191,21 @@ void SplitSteps(const vrli::Scene& scene, const vrli::RenderSettings& settings, 
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   for (; pass < 2 || elapsed() < c.step_budget; ++pass)
     for (std::size_t rep = 0; rep < batches; ++rep) {
-      const std::vector<vrli::Vrl> vrls =
-          vrli::TraceLightPaths(scene, settings.transport, c.vrls, seeds[rep], static_cast<std::uint64_t>(pass));
+      const std::vector<vrlis::integration::Vrl> vrls =
+          vrlis::integration::TraceLightPaths(scene, settings.transport, c.vrls, seeds[rep], static_cast<std::uint64_t>(pass));
       std::vector<std::vector<double>> values(columns, std::vector<double>(3 * n));
       tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        vrli::Rng rng(seeds[rep], static_cast<std::uint64_t>(pass), i, vrli::StreamPurpose::Camera);
+        vrlis::integration::Rng rng(seeds[rep], static_cast<std::uint64_t>(pass), i, vrlis::integration::StreamPurpose::Camera);
         const float jx = rng.Uniform(), jy = rng.Uniform();
-        const vrli::CameraSegment seg = segment(static_cast<float>(pixels[i].first) + jx, static_cast<float>(pixels[i].second) + jy);
+        const vrlis::integration::CameraSegment seg = segment(static_cast<float>(pixels[i].first) + jx, static_cast<float>(pixels[i].second) + jy);
         if (seg.iv.Empty()) return;
         for (std::size_t s = 0; s < c.samplers.size(); ++s) {
-          vrli::Spectrum sum;
-          for (const vrli::Vrl& vrl : vrls) sum += GatherWith(c.samplers[s], scene, seg, vrl, rng);
+          vrlis::integration::Spectrum sum;
+          for (const vrlis::integration::Vrl& vrl : vrls) sum += GatherWith(c.samplers[s], scene, seg, vrl, rng);
           Put(sum, i, &values[s]);
         }
-        vrli::Spectrum one, none;
-        for (const vrli::Vrl& vrl : vrls) {
+        vrlis::integration::Spectrum one, none;
+        for (const vrlis::integration::Vrl& vrl : vrls) {
           vrlis::VrlPoint<float> vp = StepOne(seg, vrl);
           float v = vp.sample(rng.Uniform()), pv = vp.pdf(v);
           if (pv > 0 && std::isfinite(pv)) one += StepTwoByQuadrature(scene, seg, vrl, v) * (1 / pv);
@@ -239,4 +239,4 @@ DecomposeResult Decompose(const DecomposeConfig& config) {
   return out;
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

@@ -7,7 +7,7 @@
 
 #include "render_call.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 struct Reference {
   std::vector<double> mean;              // RGB per pixel
@@ -19,7 +19,7 @@ struct Reference {
 
 // Renders about `seconds` of passes, the samplers of `mixture` in turn (or loads them from
 // `dir` when a cached render has exactly the settings described by `key`).
-Reference GetReference(PassRenderer& renderer, const std::vector<Sampler>& mixture, double seconds,
+Reference GetReference(PassRenderer& renderer, const std::vector<GatherSamplers>& mixture, double seconds,
                        const std::string& dir, const std::string& name, const std::string& key, int width, int height);
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

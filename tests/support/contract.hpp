@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
-#include "integrand.hpp"
+#include "segment_integrand.hpp"
 
-namespace vrlis_stab {
+namespace vrlis::stability {
 
 // The stated round-trip rule. A camera-segment sampler works in the angle offset delta in
 // [0, width] and returns t rounded to Real, so sample(u) can lie a few units in the last
@@ -222,4 +222,4 @@ std::string CheckVrlPoint(const vrlis::VrlPoint<Real>& s, const vrlis::VrlPointQ
   return CheckSamples(s, q.tmin, q.tmax, us, n, positive, band, v);
 }
 
-}  // namespace vrlis_stab
+}  // namespace vrlis::stability

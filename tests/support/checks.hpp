@@ -14,7 +14,7 @@
 #include "sampler_types.hpp"
 #include "stats.hpp"
 
-namespace vrlis_test {
+namespace vrlis::test {
 
 template <typename Real>
 const char* RealName() { return std::is_same_v<Real, float> ? "float" : "double"; }
@@ -151,9 +151,9 @@ DerivativeCheck CheckDerivative(const S& s, double u0, double scale_h, double tm
   return r;
 }
 
-}  // namespace vrlis_test
+}  // namespace vrlis::test
 
-namespace vrlis_test {
+namespace vrlis::test {
 
 // The smallest and largest of f at 17 points of x -+ dx (clamped to [lo, hi]): the values
 // f takes within the rounding dx of its argument, a spike inside included.
@@ -176,4 +176,4 @@ bool FusedPdfAgrees(Real fused, std::pair<double, double> range) {
   return double(fused) >= range.first * (1 - 64 * eps) - tiny && double(fused) <= range.second * (1 + 64 * eps) + tiny;
 }
 
-}  // namespace vrlis_test
+}  // namespace vrlis::test

@@ -12,14 +12,14 @@
 
 #include "render_call.hpp"
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 struct DecomposeConfig {
   std::string scene;
   int width = 48, height = 48;
   int vrls = 32;
-  Sampler sampler = kBaseline;    // the camera sampler of the parts' renders
-  std::vector<Sampler> samplers;  // the gathers compared in (2)
+  GatherSamplers sampler = kBaseline;    // the camera sampler of the parts' renders
+  std::vector<GatherSamplers> samplers;  // the gathers compared in (2)
   double budget = 20;             // seconds for (1), all parts together
   double step_budget = 15;        // seconds for (2)
   int replicates = 8;             // batches for the standard errors
@@ -38,7 +38,7 @@ struct PartResult {
 };
 
 struct StepResult {
-  Sampler sampler{};
+  GatherSamplers sampler{};
   Estimate variance;  // the gather as rendered
   Estimate step_two;  // what its step two adds: variance as rendered minus with step two by quadrature
 };
@@ -59,4 +59,4 @@ struct DecomposeResult {
 // Throws std::invalid_argument for an unknown scene.
 DecomposeResult Decompose(const DecomposeConfig& config);
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

@@ -9,19 +9,19 @@
 #include <vrlis_integration/renderer.hpp>
 #include <vrlis_scenes/scenes.hpp>
 
-namespace vrl_compare {
+namespace vrlis::compare {
 
 struct StudyScene {
-  vrl_render::BuiltScene built;
-  vrli::RenderSettings settings;
+  vrlis::scenes::BuiltScene built;
+  vrlis::integration::RenderSettings settings;
 };
 
 // Throws std::invalid_argument for an unknown scene.
-inline StudyScene BuildStudyScene(const std::string& name, const vrl_render::MediumOverrides& overrides, int width,
+inline StudyScene BuildStudyScene(const std::string& name, const vrlis::scenes::MediumOverrides& overrides, int width,
                                   int height, int vrls) {
-  auto built = vrl_render::BuildScene(name, overrides);
+  auto built = vrlis::scenes::BuildScene(name, overrides);
   if (!built) throw std::invalid_argument("unknown scene '" + name + "'");
-  vrli::RenderSettings settings;
+  vrlis::integration::RenderSettings settings;
   settings.width = width;
   settings.height = height;
   settings.vrls_per_pass = vrls;
@@ -29,4 +29,4 @@ inline StudyScene BuildStudyScene(const std::string& name, const vrl_render::Med
   return {std::move(*built), settings};
 }
 
-}  // namespace vrl_compare
+}  // namespace vrlis::compare

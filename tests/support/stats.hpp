@@ -14,7 +14,7 @@
 
 #include "integrand.hpp"
 
-namespace vrlis_test {
+namespace vrlis::test {
 
 // ---- Quadrature -----------------------------------------------------------------------
 
@@ -220,4 +220,4 @@ class Summary {
   std::map<std::string, double> counts_;
 };
 
-}  // namespace vrlis_test
+}  // namespace vrlis::test
