@@ -47,6 +47,12 @@ nlohmann::json ToJson(const vrlis::compare::RatioInterval& r) {
 }
 nlohmann::json ToJson(const vrlis::compare::Estimate& e) { return {{"value", e.value}, {"se", e.standard_error}}; }
 
+nlohmann::json Progressions(const std::vector<vrlis::compare::Progression>& replicates) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : replicates) out.push_back({{"seconds", p.seconds}, {"rmse", p.rmse}});
+  return out;
+}
+
 bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error) {
   const StudyConfig& c = r.config;
   std::filesystem::create_directories(dir);
@@ -57,14 +63,15 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
     samplers.push_back({{"sampler", SamplerName(s.sampler)}, {"passes", s.passes}, {"seconds_per_pass", s.seconds},
                         {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_novak", ToJson(s.to_baseline)},
                         {"error_to_noise", s.error_to_noise}, {"verdict", s.verdict},
-                        {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}}});
+                        {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}},
+                        {"progression", Progressions(s.progression)}});
     if (!vrlis::scenes::WritePng(dir + "/" + SamplerName(s.sampler) + ".png",
                               vrlis::compare::ToFilm(s.image, c.width, c.height), exposure, error))
       return false;
   }
   nlohmann::json mixture = nlohmann::json::array();
   for (auto s : c.samplers) mixture.push_back(SamplerName(s));
-  nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
+  nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"vrl_only", c.vrl_only}, {"margin", c.margin}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
                       {"budget", c.budget}, {"replicates", c.replicates}, {"seed", c.seed},
                       {"passes_per_replicate", r.passes_per_replicate}, {"verdict", r.verdict},
                       {"top_vs_runner_up", ToJson(r.top_vs_runner_up)}, {"resolution", r.resolution},
@@ -139,6 +146,8 @@ int main(int argc, char** argv) {
   int threads = 2;
   std::string out = "out/compare";
   app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, budget 12 s (the published run)");
+  app.add_flag("--vrl-only", base.vrl_only, "The image of the two VRL gathers alone (medium-to-medium and "
+                                          "medium-to-surface), as the thesis measured, not the whole transport");
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
@@ -171,6 +180,7 @@ int main(int argc, char** argv) {
     if (app.count("--g") == 0) gs = {-0.9f, -0.5f, 0.f, 0.5f, 0.9f};
     if (app.count("--budget") == 0) base.budget = 12;
   }
+  if (decompose && base.vrl_only) return Fail("--decompose splits the whole transport; it does not take --vrl-only");
   if (decompose && app.count("--scenes") == 0)
     scenes.assign(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end());
 

@@ -2,9 +2,12 @@
 """Charts and pages for vrl_compare's output.
 
 Study mode (default): an efficiency chart (efficiency / Novak's with 95% intervals, one
-panel per scene) and, per study, an image strip (the reference and every sampler after the
-same passes). With --publish DIR, also copies them into DIR, writes DIR/results.md (date,
-machine, command, table, what each study resolved) and the summary block of README.md.
+panel per scene), per study an image strip (the reference and every sampler after the same
+passes), and the RMSE-against-time chart of bidirectional g = -0.9 (every study with
+--rmse-all). With --publish DIR, also copies them into DIR and writes DIR/results.md (date,
+machine, command, table, what each study resolved) and the README's table; for a VRL-only
+study (vrl_compare --vrl-only), DIR/vrl_only.md, DIR/thesis_claims.md (thesis.py) and the
+README's sentence on the thesis's claims instead.
 
 Decompose mode (--decompose): per scene, a stacked bar chart of the shares of per-pass
 variance and of time per part of transport, and of the medium-to-medium gather's variance
@@ -29,6 +32,7 @@ import matplotlib.ticker as ticker  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from samplers import style  # noqa: E402
+import thesis  # noqa: E402
 
 PART_COLOURS = {
     "medium-to-medium": "tab:blue",
@@ -122,25 +126,33 @@ def plot_strip(study_dir, result, name):
     save(fig, study_dir, f"{name}_strip", svg=False)
 
 
-def publish_study(out, names, results, folder, command):
+def publish_study(out, names, results, folder, command, vrl_only):
+    """The whole-image study publishes results.md and the README's table; the VRL-only one
+    (--vrl-only) publishes vrl_only.md beside it, thesis_claims.md, the RMSE-against-time
+    chart and the README's sentence on the thesis's claims."""
     os.makedirs(folder, exist_ok=True)
-    shutil.copy(os.path.join(out, "efficiency.png"), folder)
-    shutil.copy(os.path.join(out, "efficiency.svg"), folder)
+    suffix = "_vrl" if vrl_only else ""
+    for ext in ("png", "svg"):
+        shutil.copy(os.path.join(out, f"efficiency.{ext}"), os.path.join(folder, f"efficiency{suffix}.{ext}"))
     with open(os.path.join(out, "summary.md")) as f:
         table = f.read()
     with open(os.path.join(out, "resolution.txt")) as f:
         resolution = f.read()
     r0 = results[0]
+    what = ("the image of the two VRL gathers alone (medium-to-medium and medium-to-surface; no direct light, "
+            "single scattering or path-traced remainder), with its own reference; the whole-image study is "
+            "[results.md](results.md), the thesis's claims on this one [thesis_claims.md](thesis_claims.md)"
+            if vrl_only else "whole images; the VRL gathers alone: [vrl_only.md](vrl_only.md)")
     lines = [
-        "# Equal-time study: results",
+        "# Equal-time study, VRL gathers only: results" if vrl_only else "# Equal-time study: results",
         "",
         provenance(command),
         "",
         f"{r0['width']}x{r0['height']} pixels, {r0['vrls']} light paths per pass, {r0['replicates']} replicates "
-        f"per study, at least {r0['budget']:g} s of passes per sampler; seed {r0['seed']}. How the numbers are "
-        "made and how to read them: [README.md](README.md).",
+        f"per study, at least {r0['budget']:g} s of passes per sampler; seed {r0['seed']}; {what}. How the "
+        "numbers are made and how to read them: [README.md](README.md).",
         "",
-        "![efficiency](efficiency.png)",
+        f"![efficiency](efficiency{suffix}.png)",
         "",
         table,
         "What each study could resolve:",
@@ -153,11 +165,21 @@ def publish_study(out, names, results, folder, command):
         "",
     ]
     for name in names:
-        shutil.copy(os.path.join(out, name, name + "_strip.png"), folder)
-        lines += [f"![{name}]({name}_strip.png)", ""]
-    with open(os.path.join(folder, "results.md"), "w") as f:
+        shutil.copy(os.path.join(out, name, name + "_strip.png"), os.path.join(folder, f"{name}{suffix}_strip.png"))
+        lines += [f"![{name}]({name}{suffix}_strip.png)", ""]
+    with open(os.path.join(folder, "vrl_only.md" if vrl_only else "results.md"), "w") as f:
         f.write("\n".join(lines))
-    update_readme(provenance(command), table)
+    if not vrl_only:
+        update_readme(provenance(command), verdict_table(table))
+        return
+    page, sentence = thesis.claims_page(results, provenance(command), r0["margin"])
+    with open(os.path.join(folder, "thesis_claims.md"), "w") as f:
+        f.write(page)
+    for name in names:
+        if os.path.exists(os.path.join(out, name, "rmse_time.png")):
+            for ext in ("png", "svg"):
+                shutil.copy(os.path.join(out, name, f"rmse_time.{ext}"), os.path.join(folder, f"rmse_time_{name}.{ext}"))
+    update_readme(provenance(command), sentence + "\n", marker="thesis-claims")
 
 
 def verdict_table(table):
@@ -180,18 +202,18 @@ def verdict_table(table):
     return "\n".join(lines) + "\n"
 
 
-def update_readme(provenance_line, table, readme="README.md"):
-    """Replaces the block between the compare-summary markers of the project README with the
-    verdicts of the table just measured (verdict_table), so the README never quotes a table no
-    command made; docs/compare/results.md keeps the whole table."""
-    begin, end = "<!-- compare-summary -->", "<!-- /compare-summary -->"
+def update_readme(provenance_line, text_block, marker="compare-summary", readme="README.md"):
+    """Replaces the block between the project README's markers with what was just measured
+    (the verdicts, or the sentence on the thesis's claims), so that the README never quotes a
+    figure no command made; docs/compare/ keeps the whole tables."""
+    begin, end = f"<!-- {marker} -->", f"<!-- /{marker} -->"
     if not os.path.exists(readme):
         return
     with open(readme) as f:
         text = f.read()
     if begin not in text or end not in text:
         return
-    block = f"{begin}\n{provenance_line}\n\n{verdict_table(table)}{end}"
+    block = f"{begin}\n{provenance_line}\n\n{text_block}{end}"
     text = text[: text.index(begin)] + block + text[text.index(end) + len(end):]
     with open(readme, "w") as f:
         f.write(text)
@@ -200,11 +222,15 @@ def update_readme(provenance_line, table, readme="README.md"):
 def study_main(args):
     names = load(os.path.join(args.out, "studies.json"))
     results = [load(os.path.join(args.out, name, "result.json")) for name in names]
+    vrl_only = results[0].get("vrl_only", False)
     plot_efficiency(results, args.out)
     for name, result in zip(names, results):
         plot_strip(os.path.join(args.out, name), result, name)
+        # The thesis's figure: the bidirectional scene at g = -0.9; every study with --rmse-all.
+        if args.rmse_all or (result["scene"] == "bidirectional" and thesis.g_of(result) == -0.9):
+            thesis.plot_rmse_time(result, os.path.join(args.out, name, "rmse_time.png"), style)
     if args.publish:
-        publish_study(args.out, names, results, args.publish, args.command)
+        publish_study(args.out, names, results, args.publish, args.command, vrl_only)
 
 
 # ---------------------------------------------------------------- the noise decomposition
@@ -383,6 +409,8 @@ def main():
     parser.add_argument("--decompose", action="store_true", help="the noise decomposition (vrl_compare --decompose)")
     parser.add_argument("--publish", help="folder to copy the charts and pages into (docs/compare)")
     parser.add_argument("--command", default="tools/main.sh", help="the command that produced the output")
+    parser.add_argument("--rmse-all", action="store_true",
+                        help="an RMSE-against-time chart for every study (default: bidirectional at g = -0.9)")
     args = parser.parse_args()
     (decompose_main if args.decompose else study_main)(args)
     return 0

@@ -1,6 +1,7 @@
 #include "study.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -22,6 +23,12 @@ std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::Transpo
   return key.str();
 }
 
+double Rmse(const std::vector<double>& image, const std::vector<double>& reference) {
+  double sum = 0;
+  for (std::size_t i = 0; i < image.size(); ++i) sum += (image[i] - reference[i]) * (image[i] - reference[i]);
+  return image.empty() ? 0 : std::sqrt(sum / static_cast<double>(image.size()));
+}
+
 double MeanOf(const std::vector<double>& x) {
   return x.empty() ? 0 : std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
 }
@@ -31,6 +38,7 @@ struct Runner {
   std::vector<PassStatistics> replicates;
   PassStatistics all;
   std::vector<double> seconds;  // per replicate
+  std::vector<Progression> progression;
 
   Replicates Summary(int per_replicate) const {
     Replicates r;
@@ -80,7 +88,8 @@ void Decide(StudyResult& r, double margin) {
 StudyResult RunStudy(const StudyConfig& config) {
   vrlis::scenes::MediumOverrides overrides;
   overrides.g = config.g;
-  const StudyScene scene = BuildStudyScene(config.scene, overrides, config.width, config.height, config.vrls);
+  StudyScene scene = BuildStudyScene(config.scene, overrides, config.width, config.height, config.vrls);
+  if (config.vrl_only) KeepVrlGathersOnly(scene);
   PassRenderer renderer(scene.built.scene, scene.settings);
   const std::size_t values = 3 * static_cast<std::size_t>(config.width) * static_cast<std::size_t>(config.height);
   const auto replicates = static_cast<std::size_t>(config.replicates);
@@ -96,7 +105,7 @@ StudyResult RunStudy(const StudyConfig& config) {
   std::vector<Runner> runners;
   for (GatherSamplers s : config.samplers)
     runners.push_back({s, std::vector<PassStatistics>(replicates, PassStatistics(values)), PassStatistics(values),
-                       std::vector<double>(replicates, 0.0)});
+                       std::vector<double>(replicates, 0.0), std::vector<Progression>(replicates)});
 
   // Whole cycles (one pass of every replicate) so that all replicates hold the same number
   // of passes; at least two, for a variance within each.
@@ -117,6 +126,8 @@ StudyResult RunStudy(const StudyConfig& config) {
         run.seconds[rep] += seconds;
         run.replicates[rep].Add(pass);
         run.all.Add(pass);
+        run.progression[rep].seconds.push_back(run.seconds[rep]);
+        run.progression[rep].rmse.push_back(Rmse(run.replicates[rep].Mean(), reference.mean));
       }
     ++per_replicate;
   }
@@ -145,6 +156,7 @@ StudyResult RunStudy(const StudyConfig& config) {
       expected += noise[i] + reference.variance_of_mean[i];
     }
     s.error_to_noise = expected > 0 ? error / expected : 0;
+    s.progression = std::move(run.progression);
     out.sampler_noise += MeanOf(noise) / static_cast<double>(runners.size());
     out.samplers.push_back(std::move(s));
   }

@@ -31,6 +31,15 @@ struct StudyConfig {
   std::vector<GatherSamplers> samplers;  // includes kBaseline
   std::uint64_t seed = 1;
   std::string reference_dir;      // shared cache of references
+  // The image of the two VRL gathers alone (medium-to-medium and medium-to-surface), as the
+  // thesis and Novák et al. 2012 measure, instead of the scene's whole transport.
+  bool vrl_only = false;
+};
+
+// How one replicate converged: after each of its passes, the seconds spent so far and the
+// RMSE of its running mean against the reference.
+struct Progression {
+  std::vector<double> seconds, rmse;
 };
 
 struct SamplerResult {
@@ -44,6 +53,7 @@ struct SamplerResult {
   double error_to_noise = 0;
   std::string verdict;  // "best", "tie" or empty
   std::vector<double> image;
+  std::vector<Progression> progression;  // per replicate
 };
 
 struct StudyResult {

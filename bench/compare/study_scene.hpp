@@ -29,4 +29,12 @@ inline StudyScene BuildStudyScene(const std::string& name, const vrlis::scenes::
   return {std::move(*built), settings};
 }
 
+// Only the two VRL gathers: no direct lighting, single scattering or path-traced remainder.
+inline void KeepVrlGathersOnly(StudyScene& s) {
+  vrlis::integration::TransportSettings& t = s.settings.transport;
+  t.direct = t.single_scattering = t.indirect = false;
+  t.medium_to_medium = true;
+  t.medium_to_surface = s.built.has_surfaces;
+}
+
 }  // namespace vrlis::compare

@@ -6,7 +6,7 @@
 
 #include "checks.hpp"
 
-using namespace vrlis_test;
+using namespace vrlis::test;
 
 namespace {
 

@@ -23,7 +23,9 @@ class CauchyMixtureAngle {
   CauchyMixtureAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : CauchyMixtureAngle(PhaseProduct<Real>(q, dom)) {}
 
   // Component k = floor(n u) takes the rest of n u, so one uniform number serves both choices.
+  // With every lobe flat the mixture is uniform and u maps as in equiangular sampling.
   Real sample(Real u) const {
+    if (fit_.count == 0) return u * width_;
     int k = std::min(int(u * components_), components_ - 1);
     Real rest = std::min(u * components_ - k, Real(1));
     return k < fit_.count ? fit_.lobe[k].inverse_primitive(rest * fit_.lobe[k].mass()) : rest * width_;
