@@ -122,6 +122,8 @@ VRLIS_BUILD="$new" /usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" <<'EO
 import json, math, os, statistics, sys
 out, reps, scenes, samplers = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(), sys.argv[4].split()
 missing = set()  # what one of the commits has no benchmark or sampler for
+def median(b):  # the median of the repetitions; with one repetition, Google Benchmark writes the run alone
+    return b.get("aggregate_name") == "median" or (reps == 1 and b.get("run_type") != "aggregate")
 def gps(scene, sampler, threads, build):
     try:
         return statistics.median(json.load(open(f"{out}/runs/{scene}_{sampler}_{threads}_{build}_{r}.json"))["gathers_per_second"]
@@ -169,7 +171,7 @@ class Missing(float):
     def __format__(self, spec): return "n/a"
 def get(build, name): return times.get((build, name)) or Missing(f"{name} ({build})")
 def t(build, cam, g): return get(build, f"Camera/{cam}/g:{g:.2f}")
-print(f"\nCamera step per sample, ns (fit + sample + pdf, float; this tree: fit + sample_pdf, one call; base: sample then pdf(t); median of {reps} interleaved runs)\n")
+print(f"\nCamera step per sample, ns (fit + sample + pdf, float, as each commit's Camera/ benchmark times it; median of {reps} interleaved runs)\n")
 print("| g | " + " | ".join(f"{c} base | {c} new" for c in cams) + " | CSum/Novak base | CSum/Novak new | CMix/Novak base | CMix/Novak new |")
 print("|---|" + "---|" * (2 * len(cams) + 4))
 def geo(xs): return math.exp(sum(map(math.log, xs)) / len(xs))
@@ -180,12 +182,12 @@ for g in gs:
 # Step one alone on the line queries (VrlPointFromLine: VrlPoint without validating a whole
 # gather query).
 base_vp, new_vp = get("base", "VrlPointFromLine"), get("new", "VrlPointFromLine")
-print(f"\nStep one per sample, ns (VrlPoint from the camera line, g = 0 pool; base: fit, sample, pdf; this tree: fit, "
-      f"sample_pdf; median of {reps} interleaved runs): base {base_vp:.0f}, new {new_vp:.0f}, new / base **{new_vp / base_vp:.2f}**")
+print(f"\nStep one per sample, ns (VrlPoint from the camera line, g = 0 pool; median of {reps} interleaved runs): "
+      f"base {base_vp:.0f}, new {new_vp:.0f}, new / base **{new_vp / base_vp:.2f}**")
 vm = [(g, get("base", f"VrlMarginalBounded/step/g:{g:.2f}"), get("new", f"VrlMarginalBounded/step/g:{g:.2f}"))
       for g in gs]
 print(f"\nStep one with VrlMarginal per sample, ns (fit + sample + pdf as above, over the pool's bounded camera segments: "
-      f"the baseline cannot fit unbounded ones; median of {reps} interleaved runs)\n")
+      f"which every commit's VrlMarginal can fit; median of {reps} interleaved runs)\n")
 print("| g | " + " | ".join(f"{g:g}" for g, _, _ in vm) + " |")
 print("|---|" + "---|" * len(vm))
 print("| base | " + " | ".join(f"{b:.0f}" for _, b, _ in vm) + " |")
@@ -203,11 +205,10 @@ print("| scene | " + " | ".join(scene_methods) + " | CSum/Novak | CMix/Novak |")
 print("|---|" + "---|" * (len(scene_methods) + 2))
 for scene in scenes:
     st = {b["name"].split("/")[1].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/scene_{scene}.json"))["benchmarks"]
-          if b.get("aggregate_name") == "median"}
+          if median(b)}
     print(f"| {scene} | " + " | ".join(f"{st[m]:.0f}" for m in scene_methods) +
           f" | {st['cauchy-sum'] / st['novak']:.2f} | {st['cauchy-mixture'] / st['novak']:.2f} |")
-parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
-         if b.get("aggregate_name") == "median"}
+parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json") if median(b)}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
       "one VRL at a time; batched gather: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
       "the renderer's call; batched surface gather: one of SampleSurfaceGathers, eight VRLs seen from one surface "
