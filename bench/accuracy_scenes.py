@@ -16,7 +16,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from samplers import OWN, POLICIES  # noqa: E402
+from samplers import own, policies  # noqa: E402
 
 SCENES = ["bidirectional", "room", "cube", "corner"]
 
@@ -29,7 +29,7 @@ def fmt(x, digits=3):
 
 def tabled(acc):
     """The samplers of one vrlis_accuracy run that the tables show: registry names, in order."""
-    return [n for n in acc["samplers"] if n not in POLICIES]
+    return [n for n in acc["samplers"] if n not in policies()]
 
 
 def load(directory):
@@ -53,7 +53,7 @@ def relvar_table(L, runs, step, title):
     L.append("Each cell: unweighted mean / **image-weighted mean** (median in brackets). "
              "Best image-weighted value of the row in bold italics; `+M`: step one by VrlMarginal.\n")
     samplers = tabled(runs[0][2])
-    published = [s for s in samplers if s not in OWN]
+    published = [s for s in samplers if s not in own()]
     L.append("| scene | g | " + " | ".join(samplers) + " | best weighted | best weighted, published |")
     L.append("|---" * (len(samplers) + 4) + "|")
     for scene, g, acc, _ in runs:

@@ -15,8 +15,8 @@ void StepOneAlone(benchmark::State& state, double g) {
                         [&](size_t i) { return pools.configs[i].xi_vrl; });
 }
 
-// VrlPoint from the camera line alone (no gather query to validate): what 146a16a's VrlPoint
-// benchmark timed, for tools/speed.sh's comparison.
+// VrlPoint from the camera line alone (no gather query to validate): what older commits'
+// VrlPoint benchmark timed, for tools/speed.sh's comparisons.
 void VrlPointFromLine(benchmark::State& state) {
   const Pools& pools = PoolsFor(0.0);
   FitSamplePdf<VrlPoint<float>>(
@@ -26,7 +26,7 @@ void VrlPointFromLine(benchmark::State& state) {
 
 // VrlMarginalBounded: the same over the pool's bounded camera segments only (each
 // iteration takes the next one), for comparison with builds that reject unbounded ones
-// (tools/speed.sh against 146a16a).
+// (tools/speed.sh against older commits).
 void VrlMarginalBounded(benchmark::State& state, double g) {
   const Pools& pools = PoolsFor(g);
   std::vector<size_t> bounded;  // kPool indices, cycling through the bounded configurations

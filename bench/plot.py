@@ -24,7 +24,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from samplers import OWN, POLICIES, label, style  # noqa: E402
+from samplers import label, own, policies, style  # noqa: E402
 
 STEPS = [("camera", "Camera", "camera step (fixed VRL point)"),
          ("whole", "Estimator", "whole estimator (VRL point + camera point)"),
@@ -87,9 +87,9 @@ def main():
         acc = json.load(f)
     names = acc["samplers"]  # the registry's, in its order
     times, context = load_bench(args.bench, names)
-    tabled = [n for n in names if n not in POLICIES]
+    tabled = [n for n in names if n not in policies()]
     samplers = [label(n) for n in tabled]
-    published = [label(n) for n in tabled if n not in OWN]
+    published = [label(n) for n in tabled if n not in own()]
     styles = {label(n): style(n) for n in tabled}
 
     def relabel(per_sampler):

@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
                "OpenEXR), a tonemapped sRGB PNG and a JSON summary beside it. Usage errors exit with code 2."};
   app.add_option("--scene", scene_name, "Scene: " + JoinNames())->required();
-  app.add_option("--sampler", sampler, "Camera-segment sampler: " + SamplerNames())->capture_default_str();
+  app.add_option("--sampler", sampler, "Samplers (segment[+vrl]): " + SamplerNames())->capture_default_str();
   app.add_option("--integrator", integrator, "vrl (the VRL pipeline) or path (the reference path tracer)")
       ->capture_default_str();
   app.add_option("--gather", gather, "all (full transport), m2m (VRL medium-to-medium only) or m2s "
@@ -134,6 +134,13 @@ int main(int argc, char** argv) {
                                                  "vrlis_integration/query_log.hpp)");
   app.add_option("--dump-every", dump_every, "Keep about one gather query in K for --dump-queries")
       ->capture_default_str();
+  app.add_flag("--list-samplers", "Print the samplers (names, labels, properties) as JSON and exit");
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--list-samplers") {
+      std::printf("{\"segment\": %s,\n \"vrl\": %s}\n", vrlis::SegmentSamplers::ListJson().c_str(),
+                  vrlis::VrlSamplers::ListJson().c_str());
+      return 0;
+    }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,6 +1,6 @@
 // libFuzzer target: every camera-segment sampler and VrlPoint, in float and double, driven by
 // queries decoded from arbitrary bytes, checked against the contract of
-// angle/segment_sampler.hpp and samplers/vrl_point.hpp (tests/stability/contract.hpp).
+// angle/segment_sampler.hpp and samplers/vrl_point.hpp (tests/support/contract.hpp).
 // A violation prints the query and aborts.
 //
 // Input layout: byte 0 selects precision (bit 0), decoding (bits 1-2: raw floats, raw floats
@@ -110,7 +110,7 @@ void Run(Bytes& b, int mode, int lobe) {
 
   // Every camera sampler of the library's registry.
   std::string msg;
-  vrlis::test::ForEachCameraSampler<Real>([&](auto tag) {
+  vrlis::test::ForEachSegmentSampler<Real>([&](auto tag) {
     using S = typename decltype(tag)::type;
     msg = vrlis::stability::CheckSegmentSampler(S(q), q, us, n, vrlis::test::RoundTripsPointwise<S>());
     if (!msg.empty()) Fail(vrlis::test::SamplerName<S>().c_str(), msg, q);

@@ -1,29 +1,65 @@
-"""The camera samplers as the charts and tables show them, keyed by the library's registry
-names (vrlis::CameraSamplers in include/vrlis/method.hpp, which vrlis_bench, vrlis_accuracy
-and vrl_compare print). Shared by bench/plot.py, bench/accuracy_scenes.py and bench/compare/plot.py:
-a sampler's label is derived from its name, so the registry stays the one name table.
-"""
+#!/usr/bin/env python3
+"""The samplers as every chart, table and script shows them: names, labels and properties
+read from the library's registry (include/vrlis/method.hpp) through
+`vrl_render --list-samplers`, so that the registry stays the one table of samplers. Shared
+by bench/plot.py, bench/accuracy_scenes.py, bench/compare/plot.py, tools/speed.sh and
+tools/stability.sh.
 
-# vrlis's own samplers; the others are the published methods the README cites.
-OWN = {"full-product", "auto"}
-# Policies that choose among the other samplers per query: judged by the equal-time study,
-# left out of the per-sample speed and accuracy tables.
-POLICIES = {"auto"}
-_STYLE = {
-    "equiangular": ("tab:gray", "o"),
-    "novak": ("tab:blue", "s"),
-    "cauchy-sum": ("tab:orange", "^"),
-    "cauchy-mixture": ("tab:red", "v"),
-    "full-product": ("tab:green", "D"),
-    "auto": ("tab:brown", "P"),
-}
+    tools/samplers.py BUILD_DIR [--per-sample]
+prints the segment samplers' names, one a line (--per-sample: without the policies, which
+only the equal-time study judges).
+"""
+import functools
+import json
+import os
+import subprocess
+import sys
+
+# Colours and markers in registry order: a sampler keeps its look while others are added.
+_PALETTE = [("tab:gray", "o"), ("tab:blue", "s"), ("tab:orange", "^"), ("tab:red", "v"), ("tab:green", "D"),
+            ("tab:brown", "P"), ("tab:purple", "X"), ("tab:pink", "*"), ("tab:olive", "h"), ("tab:cyan", "p")]
+_ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+
+
+@functools.lru_cache(maxsize=None)
+def registry(build=None):
+    """{"segment": [entry...], "vrl": [entry...]}, each entry {name, label, own, policy, round_trip}."""
+    build = build or os.environ.get("VRLIS_BUILD", os.path.join(_ROOT, "build"))
+    listing = subprocess.run([os.path.join(build, "examples", "vrl_render"), "--list-samplers"], check=True,
+                             capture_output=True, text=True).stdout
+    return json.loads(listing)
+
+
+def _segment():
+    return {e["name"]: e for e in registry()["segment"]}
+
+
+def own():
+    """This project's samplers; the others are the published methods the README cites."""
+    return {e["name"] for kind in ("segment", "vrl") for e in registry()[kind] if e["own"]}
+
+
+def policies():
+    """Samplers that choose among the others per query: judged by the equal-time study, left
+    out of the per-sample speed and accuracy tables."""
+    return {e["name"] for e in registry()["segment"] if e["policy"]}
 
 
 def label(name):
-    """The label of a registry name: "full-product" -> "FullProduct"."""
-    return "".join(word.capitalize() for word in name.split("-"))
+    """The label of a registry name ("full-product" -> "FullProduct")."""
+    entry = _segment().get(name) or {e["name"]: e for e in registry()["vrl"]}.get(name)
+    return entry["label"] if entry else name
 
 
 def style(name):
-    """(colour, marker) of a sampler in every chart; a sampler new to the registry gets a plain one."""
-    return _STYLE.get(name, ("black", "x"))
+    """(colour, marker) of a sampler in every chart."""
+    names = list(_segment())
+    return _PALETTE[names.index(name) % len(_PALETTE)] if name in names else ("black", "x")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit("usage: tools/samplers.py BUILD_DIR [--per-sample]")
+    for entry in registry(sys.argv[1])["segment"]:
+        if "--per-sample" not in sys.argv or not entry["policy"]:
+            print(entry["name"])

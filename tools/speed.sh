@@ -1,27 +1,25 @@
 #!/usr/bin/env bash
-# Speed of this tree against a baseline commit, measured as ratios in one run: the two
-# builds' binaries are interleaved run by run (a shared machine slows both alike), and
-# each cell is the median of the repetitions.
+# Speed of one commit against another, measured as ratios in one run: both commits are
+# exported (git archive), built alike (Release, the lab and the renderer, the same flags),
+# and their binaries are interleaved run by run (a shared machine slows both alike); each
+# cell is the median of the repetitions.
 #
-#   tools/speed.sh [outdir=out/speed]
+#   tools/speed.sh BASE NEW [outdir=out/speed]      e.g. tools/speed.sh main~20 HEAD
 #
 # Prints (and writes to <outdir>/speed.md):
-# - vrl_render VRL gathers per second, per scene x sampler x build, on 1 and 2 threads, and
+# - vrl_render VRL gathers per second, per scene x sampler x commit, on 1 and 2 threads, and
 #   the 2-thread speedup;
-# - vrlis_bench's camera step per sample (fit + sample + pdf: this tree fuses the last two in sample_pdf, the baseline of 146a16a calls sample then pdf), per sampler x g x build, and
+# - vrlis_bench's camera step per sample (fit + sample + pdf), per sampler x g x commit, and
 #   the ratios CauchySum / Novak and CauchyMixture / Novak;
-# - step one per sample (VrlPoint, VrlMarginal) against the baseline;
-# - this tree's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries).
-# Environment: VRLIS_SPEED_BASE (a configured baseline build dir; default: commit
-# VRLIS_SPEED_BASE_REF=146a16a exported with git archive and built in <outdir>/base; for
-# 146a16a, tools/speed_base_pool.patch first makes its benchmarks draw this tree's query
-# pool, so that both builds time the same queries, and adds VrlMarginalBounded),
-# VRLIS_SPEED_BUILD (this tree's build dir; default build/, or <outdir>/new with
-# VRLIS_SPEED_CXXFLAGS, built here), VRLIS_SPEED_REPS (5),
-# VRLIS_SPEED_SCENES (bidirectional cube), VRLIS_SPEED_SAMPLERS (equiangular novak
-# cauchy-sum cauchy-mixture full-product), VRLIS_SPEED_SIZE (128: image side), VRLIS_SPEED_SPP (4; at 64 x 64 x 2
-# a 2-thread render lasts 0.09 s and thread start-up and the last rows' imbalance held its
-# speedup to 1.7-1.9, against 1.95-2.0 here),
+# - step one per sample (VrlPoint, VrlMarginal) in both commits;
+# - NEW's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries)
+#   and the cost of one gather.
+# A row either commit has no benchmark (or sampler) for is listed as not compared; the
+# benchmarks of an old commit are timed as that commit wrote them, on its own query pool.
+# Environment: VRLIS_SPEED_REPS (5), VRLIS_SPEED_SCENES (bidirectional cube),
+# VRLIS_SPEED_SAMPLERS (default: NEW's registry, policies left out), VRLIS_SPEED_SIZE (128:
+# image side), VRLIS_SPEED_SPP (4; at 64 x 64 x 2 a 2-thread render lasts 0.09 s and thread
+# start-up and the last rows' imbalance held its speedup to 1.7-1.9, against 1.95-2.0 here),
 # VRLIS_SPEED_PIN (a CPU number: single-threaded runs are pinned to it with taskset; on a
 # shared machine whose cores are unequally loaded this keeps a run from migrating between them),
 # VRLIS_SPEED_CXXFLAGS (compiler flags for both builds, e.g. -march=x86-64-v3: the same for
@@ -29,10 +27,15 @@
 # docs/speed-<flags>.md, and docs/bench.md keeps the default build's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=${1:-out/speed}
+if [ $# -lt 2 ]; then
+  echo "usage: tools/speed.sh BASE NEW [outdir=out/speed]  (two commits)" >&2
+  exit 2
+fi
+base_ref=$(git rev-parse --short "$1^{commit}")
+new_ref=$(git rev-parse --short "$2^{commit}")
+out=${3:-out/speed}
 reps=${VRLIS_SPEED_REPS:-5}
 scenes=${VRLIS_SPEED_SCENES:-bidirectional cube}
-samplers=${VRLIS_SPEED_SAMPLERS:-equiangular novak cauchy-sum cauchy-mixture full-product}
 size=${VRLIS_SPEED_SIZE:-128}
 spp=${VRLIS_SPEED_SPP:-4}
 mkdir -p "$out/runs"
@@ -43,31 +46,20 @@ pin=()
 other=()
 [ -z "${VRLIS_SPEED_PIN:-}" ] || other=(taskset -c "$(( (VRLIS_SPEED_PIN + 1) % $(nproc) ))")
 
-configure() {  # source dir, build dir (build/ keeps its tests: it is the developer's tree)
-  local tests=OFF
-  [ "$2" != build ] || tests=$(sed -n 's/^VRLIS_BUILD_TESTS:BOOL=//p' build/CMakeCache.txt 2>/dev/null || true)
-  cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release "-DVRLIS_BUILD_TESTS=${tests:-ON}" -DVRLIS_BUILD_BENCH=ON \
+tools/deps.sh
+build_commit() {  # commit, build dir: the commit's renderer and benchmarks, built alike
+  rm -rf "$2-src" && mkdir -p "$2-src"
+  git archive "$1" | tar -x -C "$2-src"
+  cmake -S "$2-src" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_BUILD_TESTS=OFF -DVRLIS_BUILD_BENCH=ON \
     -DVRLIS_BUILD_EXAMPLES=ON "-DCMAKE_CXX_FLAGS=${VRLIS_SPEED_CXXFLAGS:-}" >/dev/null
   cmake --build "$2" --target vrl_render vrlis_bench -j"$(nproc)" >/dev/null
 }
-new=${VRLIS_SPEED_BUILD:-build}
-patched=
-[ -n "${VRLIS_SPEED_BUILD:-}" ] || [ -z "${VRLIS_SPEED_CXXFLAGS:-}" ] || new="$out/new"  # never reconfigure build/ with other flags
-[ -n "${VRLIS_SPEED_BUILD:-}" ] || configure . "$new"
-base=${VRLIS_SPEED_BASE:-}
-if [ -z "$base" ]; then
-  ref=${VRLIS_SPEED_BASE_REF:-146a16a}
-  rm -rf "$out/base-src" && mkdir -p "$out/base-src"
-  git archive "$ref" | tar -x -C "$out/base-src"
-  # The pool of random queries changed after 146a16a (wider, like the scenes' queries):
-  # without the patch the camera-step ratios would compare different queries.
-  if [ "$(git rev-parse "$ref")" = "$(git rev-parse 146a16a)" ]; then
-    git apply --directory="$out/base-src" tools/speed_base_pool.patch
-    patched=1
-  fi
-  base="$out/base"
-  configure "$out/base-src" "$base"
-fi
+base="$out/base"
+new="$out/new"
+build_commit "$base_ref" "$base"
+build_commit "$new_ref" "$new"
+# The samplers: NEW's registry (vrl_render --list-samplers), policies left out.
+samplers=${VRLIS_SPEED_SAMPLERS:-$(/usr/bin/python3 tools/samplers.py "$new" --per-sample | tr '\n' ' ')}
 
 echo "== vrl_render: $reps rounds, builds interleaved (${size}x${size}, $spp passes)"
 for rep in $(seq "$reps"); do
@@ -82,7 +74,7 @@ for rep in $(seq "$reps"); do
           [ "$threads" != 1 ] || run=("${pin[@]}" "${run[@]}")
           [ "$threads" != 1b ] || run=("${other[@]}" "${run[@]}")
           "${run[@]}" --scene "$scene" --sampler "$sampler" --threads "${threads%b}" --width "$size" \
-            --height "$size" --spp "$spp" --quiet --out "$stem" >/dev/null
+            --height "$size" --spp "$spp" --quiet --out "$stem" >/dev/null 2>&1 || true  # absent: not compared
         done
       done
     done
@@ -126,12 +118,19 @@ for rep in $(seq "$reps"); do
   done
 done
 
-/usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" <<'EOF' | tee "$out/speed.md"
+VRLIS_BUILD="$new" /usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" <<'EOF' | tee "$out/speed.md"
 import json, math, os, statistics, sys
 out, reps, scenes, samplers = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(), sys.argv[4].split()
+missing = set()  # what one of the commits has no benchmark or sampler for
+def median(b):  # the median of the repetitions; with one repetition, Google Benchmark writes the run alone
+    return b.get("aggregate_name") == "median" or (reps == 1 and b.get("run_type") != "aggregate")
 def gps(scene, sampler, threads, build):
-    return statistics.median(json.load(open(f"{out}/runs/{scene}_{sampler}_{threads}_{build}_{r}.json"))["gathers_per_second"]
-                             for r in range(1, reps + 1))
+    try:
+        return statistics.median(json.load(open(f"{out}/runs/{scene}_{sampler}_{threads}_{build}_{r}.json"))["gathers_per_second"]
+                                 for r in range(1, reps + 1))
+    except OSError:
+        missing.add(f"vrl_render --sampler {sampler} ({build})")
+        return math.nan
 both = os.path.exists(f"{out}/runs/{scenes[0]}_{samplers[0]}_1b_new_1.json")  # 1T runs on both CPUs
 print(f"VRL gathers per second (median of {reps} interleaved runs; M = 1e6; 1T pinned to one CPU"
       + ("; the speedup is 2T over the mean of the 1T rates on either CPU" if both else "") + ")\n")
@@ -144,13 +143,13 @@ for scene in scenes:
         b1, n1, b2, n2 = (gps(scene, s, t, b) for t, b in (("1", "base"), ("1", "new"), ("2", "base"), ("2", "new")))
         print(f"| {scene} | {s} | {b1/1e6:.2f} M | {n1/1e6:.2f} M | **{n1/b1:.2f}** | {b2/1e6:.2f} M | {n2/1e6:.2f} M | "
               f"{n2/b2:.2f} | {b2/one_thread(scene, s, 'base'):.2f} | **{n2/one_thread(scene, s, 'new'):.2f}** |")
-# The baseline names its benchmarks by class (Camera/Novak), this tree by registry name
-# (Camera/novak): both are read under the class name.
-CLASS = {"equiangular": "Equiangular", "novak": "Novak", "cauchy-sum": "CauchySum", "cauchy-mixture": "CauchyMixture",
-         "full-product": "FullProduct", "auto": "Auto"}
+# Older commits name their benchmarks by class (Camera/CauchySum), newer ones by registry name
+# (Camera/cauchy-sum): both are read under the registry name's label (tools/samplers.py).
+sys.path.insert(0, "tools")
+from samplers import label
 def by_class(name):
     kind, sampler, rest = name.split("/", 2)
-    return f"{kind}/{CLASS.get(sampler, sampler)}/{rest}"
+    return f"{kind}/{label(sampler) if sampler in samplers else sampler}/{rest}"
 def load(path):
     runs = json.load(open(path))["benchmarks"]
     for b in runs:
@@ -163,9 +162,16 @@ for build in ("base", "new"):
         times[build, name] = statistics.median(b["cpu_time"] for run in runs for b in run if b["name"] == name)
 names = sorted({n for _, n in times if ":" in n}, key=lambda n: (n.split("/")[1], float(n.split(":")[1])))
 gs = sorted({float(n.split(":")[1]) for n in names})
-cams = ["Equiangular", "Novak", "CauchySum", "CauchyMixture", "FullProduct"]
-def t(build, cam, g): return times.get((build, f"Camera/{cam}/g:{g:.2f}"))
-print(f"\nCamera step per sample, ns (fit + sample + pdf, float; this tree: fit + sample_pdf, one call; base: sample then pdf(t); median of {reps} interleaved runs)\n")
+cams = [label(s) for s in samplers]
+class Missing(float):
+    """A time one commit has no benchmark for: printed as n/a, and listed below the tables."""
+    def __new__(cls, what):
+        missing.add(what)
+        return super().__new__(cls, math.nan)
+    def __format__(self, spec): return "n/a"
+def get(build, name): return times.get((build, name)) or Missing(f"{name} ({build})")
+def t(build, cam, g): return get(build, f"Camera/{cam}/g:{g:.2f}")
+print(f"\nCamera step per sample, ns (fit + sample + pdf, float, as each commit's Camera/ benchmark times it; median of {reps} interleaved runs)\n")
 print("| g | " + " | ".join(f"{c} base | {c} new" for c in cams) + " | CSum/Novak base | CSum/Novak new | CMix/Novak base | CMix/Novak new |")
 print("|---|" + "---|" * (2 * len(cams) + 4))
 def geo(xs): return math.exp(sum(map(math.log, xs)) / len(xs))
@@ -173,15 +179,15 @@ for g in gs:
     row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
     ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
-# Step one alone on the same line queries: the baseline's VrlPoint, this tree's VrlPointFromLine
-# (its VrlPoint starts from the whole gather query and validates it).
-base_vp, new_vp = times[("base", "VrlPoint")], times[("new", "VrlPointFromLine")]
-print(f"\nStep one per sample, ns (VrlPoint from the camera line, g = 0 pool; base: fit, sample, pdf; this tree: fit, "
-      f"sample_pdf; median of {reps} interleaved runs): base {base_vp:.0f}, new {new_vp:.0f}, new / base **{new_vp / base_vp:.2f}**")
-vm = [(g, times[("base", f"VrlMarginalBounded/step/g:{g:.2f}")], times[("new", f"VrlMarginalBounded/step/g:{g:.2f}")])
+# Step one alone on the line queries (VrlPointFromLine: VrlPoint without validating a whole
+# gather query).
+base_vp, new_vp = get("base", "VrlPointFromLine"), get("new", "VrlPointFromLine")
+print(f"\nStep one per sample, ns (VrlPoint from the camera line, g = 0 pool; median of {reps} interleaved runs): "
+      f"base {base_vp:.0f}, new {new_vp:.0f}, new / base **{new_vp / base_vp:.2f}**")
+vm = [(g, get("base", f"VrlMarginalBounded/step/g:{g:.2f}"), get("new", f"VrlMarginalBounded/step/g:{g:.2f}"))
       for g in gs]
 print(f"\nStep one with VrlMarginal per sample, ns (fit + sample + pdf as above, over the pool's bounded camera segments: "
-      f"the baseline cannot fit unbounded ones; median of {reps} interleaved runs)\n")
+      f"which every commit's VrlMarginal can fit; median of {reps} interleaved runs)\n")
 print("| g | " + " | ".join(f"{g:g}" for g, _, _ in vm) + " |")
 print("|---|" + "---|" * len(vm))
 print("| base | " + " | ".join(f"{b:.0f}" for _, b, _ in vm) + " |")
@@ -191,26 +197,25 @@ print(f"\nWhat the fused call saves in this tree: fit + sample_pdf (Camera) over
 print("| g | " + " | ".join(cams) + " |")
 print("|---|" + "---|" * len(cams))
 for g in gs:
-    print(f"| {g:g} | " + " | ".join(f"{t('new', c, g) / times[('new', f'CameraSeparate/{c}/g:{g:.2f}')]:.2f}" for c in cams) + " |")
+    print(f"| {g:g} | " + " | ".join(f"{t('new', c, g) / get('new', f'CameraSeparate/{c}/g:{g:.2f}'):.2f}" for c in cams) + " |")
 print(f"\nCamera step per sample on the scenes' own queries, ns (fit + sample_pdf, float; vrlis_bench SceneCamera/ over "
       f"a log of the scene's medium-to-medium gathers, vrl_render --dump-queries; median of {reps} repetitions), and over Novak\n")
-scene_methods = ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]
+scene_methods = samplers
 print("| scene | " + " | ".join(scene_methods) + " | CSum/Novak | CMix/Novak |")
 print("|---|" + "---|" * (len(scene_methods) + 2))
 for scene in scenes:
     st = {b["name"].split("/")[1].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/scene_{scene}.json"))["benchmarks"]
-          if b.get("aggregate_name") == "median"}
+          if median(b)}
     print(f"| {scene} | " + " | ".join(f"{st[m]:.0f}" for m in scene_methods) +
           f" | {st['cauchy-sum'] / st['novak']:.2f} | {st['cauchy-mixture'] / st['novak']:.2f} |")
-parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json")
-         if b.get("aggregate_name") == "median"}
+parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json") if median(b)}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
       "one VRL at a time; batched gather: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
       "the renderer's call; batched surface gather: one of SampleSurfaceGathers, eight VRLs seen from one surface "
       "point, the medium-to-surface gather, which makes most of the cube scene's gathers)\n")
 print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest | batched gather | batched surface gather |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
-for c, m in zip(cams, ["equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"]):
+for c, m in zip(cams, samplers):
     for g in (-0.9, 0.5, 0.9):
         whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], parts[f"Camera/{c}/g:{g:.2f}"]
         v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
@@ -230,6 +235,8 @@ for scene, sampler in (("bidirectional", "novak"), ("cube", "equiangular")):
     print(f"\nProfile of `vrl_render --scene {scene} --sampler {sampler} --threads 1` (perf, self time: by library, "
           "then the top symbols of known name):\n")
     print("```\n" + prof + "\n```")
+if missing:
+    print("\nNot compared (one commit has no such benchmark or sampler): " + ", ".join(sorted(missing)))
 print("\nGeometric mean over g: " + ", ".join(f"{c} new / base {geo([t('new', c, g) / t('base', c, g) for g in gs]):.2f}" for c in cams))
 for c in ("CauchySum", "CauchyMixture"):
     print(f"{c} / Novak: base {geo([t('base', c, g) / t('base', 'Novak', g) for g in gs]):.2f}, "
@@ -242,7 +249,7 @@ if [ "${VRLIS_SPEED_NO_DOCS:-0}" != 1 ]; then
   model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
   header() {
     echo "Generated $(date -u '+%Y-%m-%d %H:%M UTC') on ${model:-unknown CPU}, $(nproc) cores, $(uname -sr) by \`${VRLIS_SPEED_CXXFLAGS:+VRLIS_SPEED_CXXFLAGS=\"$VRLIS_SPEED_CXXFLAGS\" }tools/speed.sh\`"
-    echo "(baseline: ${VRLIS_SPEED_BASE:-commit ${VRLIS_SPEED_BASE_REF:-146a16a}}${patched:+, its benchmarks patched to draw the queries of this tree (tools/speed_base_pool.patch)}; both builds ${VRLIS_SPEED_CXXFLAGS:+with $VRLIS_SPEED_CXXFLAGS, }Release;"
+    echo "(base: commit $base_ref, new: commit $new_ref; both builds ${VRLIS_SPEED_CXXFLAGS:+with $VRLIS_SPEED_CXXFLAGS, }Release;"
     echo "$reps interleaved rounds;${VRLIS_SPEED_PIN:+ single-threaded runs pinned to CPU $VRLIS_SPEED_PIN;} load average"
     echo "at the end $(cut -d' ' -f1-3 /proc/loadavg); the runs' own load is about 1, and a load above the core count would mean the 2-thread columns also measure other work)."
     echo

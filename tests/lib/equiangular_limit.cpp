@@ -55,5 +55,5 @@ TEMPLATE_TEST_CASE("g = 0: every camera sampler coincides with Equiangular", "[l
   for (int i = 0; i <= 64; ++i) us.push_back(Real(i) / 64);
   // sigma_t = 0: FullProduct's target (and auto's bound) is the phase product, constant here.
   for (const Config& c : IsotropicConfigs())
-    ForEachCameraSampler<Real>([&](auto tag) { CheckCoincidesWithEquiangular<typename decltype(tag)::type>(c, us); });
+    ForEachSegmentSampler<Real>([&](auto tag) { CheckCoincidesWithEquiangular<typename decltype(tag)::type>(c, us); });
 }

@@ -205,14 +205,14 @@ void RunBattery() {
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("segment sampler battery: normalisation, chi-square, round trip, derivative, estimator",
-                        "[lib][segment]", CameraSamplerTypes) {
+                        "[lib][segment]", SegmentSamplerTypes) {
   RunBattery<TestType>();
 }
 
 // sample_pdf(u) is sample(u) with its density computed from what sampling found: the same
 // t, and pdf(t) up to the rounding of t. Every configuration of the battery, and queries
 // that are degenerate (no representable density) or invalid.
-TEMPLATE_LIST_TEST_CASE("sample_pdf(u) is {sample(u), pdf(sample(u))}", "[lib][segment][fused]", CameraSamplerTypes) {
+TEMPLATE_LIST_TEST_CASE("sample_pdf(u) is {sample(u), pdf(sample(u))}", "[lib][segment][fused]", SegmentSamplerTypes) {
   using Real = typename TestType::Real;
   long checked = 0, different_t = 0, different_pdf = 0;
   std::string first;
@@ -274,7 +274,7 @@ TEMPLATE_LIST_TEST_CASE("sample_pdf(u) is {sample(u), pdf(sample(u))}", "[lib][s
 // segment runs far from the point (the float piecewise-linear inversion once stepped back an
 // ulp in the angle, 12 ulps in t; the battery met it by chance).
 TEMPLATE_LIST_TEST_CASE("sample is nondecreasing over consecutive floats u", "[lib][segment][monotone]",
-                        CameraSamplerTypes) {
+                        SegmentSamplerTypes) {
   using Real = typename TestType::Real;
   if constexpr (RoundTripsPointwise<TestType>()) {
     const double eps = std::numeric_limits<Real>::epsilon();

@@ -120,14 +120,19 @@ struct Row {
   std::map<std::string, std::string> cell;  // metric|sampler -> text
 };
 
-template <template <typename> class S>
-void Measure(const std::string& method, const HardCase& hc, Row& row, int n) {
+// One registry entry (a segment sampler) on one hard case; `in_distribution`: its round trip
+// holds in distribution only (the registry's property), so it is measured by KS.
+template <typename Entry>
+void Measure(bool in_distribution, const HardCase& hc, Row& row, int n) {
+  using SD = typename Entry::template Sampler<double>;
+  using SF = typename Entry::template Sampler<float>;
+  const std::string method(Entry::kName);
   auto qd = Rounded(hc.q);
   auto qf = Cast<float>(hc.q);
   RefQuery ref(qd);
-  S<double> sd(qd);
-  S<float> sf(qf);
-  bool mixture = method == "cauchy-mixture";
+  SD sd(qd);
+  SF sf(qf);
+  bool mixture = in_distribution;
   double integral = hc.integrable ? Integral(ref) : kInf;
   std::vector<double> grid;
   double h = ref.h();
@@ -142,14 +147,14 @@ void Measure(const std::string& method, const HardCase& hc, Row& row, int n) {
   std::string key = method;
   if (!(integral > 0) || !std::isfinite(integral)) {
     // No weights: a zero integral (zero length) or a divergent one (p on the segment).
-    WeightStats a = Weights<S<double>, double>(sd, ref, 1.0, ref.tmin, ref.tmax, {}, 2000, hc.name + " / " + method + " / double", integral != 0);
-    WeightStats b = Weights<S<float>, float>(sf, ref, 1.0, ref.tmin, ref.tmax, {}, 2000, hc.name + " / " + method + " / float", integral != 0);
+    WeightStats a = Weights<SD, double>(sd, ref, 1.0, ref.tmin, ref.tmax, {}, 2000, hc.name + " / " + method + " / double", integral != 0);
+    WeightStats b = Weights<SF, float>(sf, ref, 1.0, ref.tmin, ref.tmax, {}, 2000, hc.name + " / " + method + " / float", integral != 0);
     std::string why = integral == 0 ? "(integral 0)" : "(diverges)";
     row.cell["wd|" + key] = why + (a.violations ? " !" : "");
     row.cell["wf|" + key] = why + (b.violations ? " !" : "");
   } else {
-    WeightStats a = Weights<S<double>, double>(sd, ref, integral, ref.tmin, ref.tmax, grid, n, hc.name + " / " + method + " / double");
-    WeightStats b = Weights<S<float>, float>(sf, ref, integral, ref.tmin, ref.tmax, grid, n, hc.name + " / " + method + " / float");
+    WeightStats a = Weights<SD, double>(sd, ref, integral, ref.tmin, ref.tmax, grid, n, hc.name + " / " + method + " / double");
+    WeightStats b = Weights<SF, float>(sf, ref, integral, ref.tmin, ref.tmax, grid, n, hc.name + " / " + method + " / float");
     row.cell["wd|" + key] = Fmt(a.max_w) + " (" + Fmt(a.mean_w) + ")" + (a.violations ? " !" : "");
     row.cell["wf|" + key] = Fmt(b.max_w) + " (" + Fmt(b.mean_w) + ")" + (b.violations ? " !" : "");
   }
@@ -161,19 +166,6 @@ void Measure(const std::string& method, const HardCase& hc, Row& row, int n) {
   }
   row.cell["rt|" + key] = Fmt(RoundTrip(sf, n / 10, mixture)) + " / " + Fmt(RoundTrip(sd, n / 10, mixture)) + ks;
 }
-
-template <typename Real>
-using Equi = vrlis::Equiangular<Real>;
-template <typename Real>
-using Nov = vrlis::Novak<Real>;
-template <typename Real>
-using Sum = vrlis::CauchySum<Real>;
-template <typename Real>
-using Mix = vrlis::CauchyMixture<Real>;
-template <typename Real>
-using Full = vrlis::FullProduct<Real>;
-template <typename Real>
-using Auto = vrlis::Auto<Real>;
 
 void PrintTable(const std::string& title, const std::string& metric, const std::vector<Row>& rows,
                 const std::vector<std::string>& methods) {
@@ -197,16 +189,15 @@ void PrintTable(const std::string& title, const std::string& metric, const std::
 int main(int argc, char** argv) {
   int n = argc > 1 ? std::max(100, std::atoi(argv[1])) : 100000;
   auto start = std::chrono::steady_clock::now();
-  std::vector<std::string> methods = {"equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product", "auto"};
+  using Registry = vrlis::SegmentSamplers;
+  std::vector<std::string> methods(Registry::kNames.begin(), Registry::kNames.end());
   std::vector<Row> rows;
   for (const HardCase& hc : HardCases()) {
     Row row{hc.name, {}};
-    Measure<Equi>("equiangular", hc, row, n);
-    Measure<Nov>("novak", hc, row, n);
-    Measure<Sum>("cauchy-sum", hc, row, n);
-    Measure<Mix>("cauchy-mixture", hc, row, n);
-    Measure<Full>("full-product", hc, row, n);
-    Measure<Auto>("auto", hc, row, n);
+    for (vrlis::SegmentChoice c : vrlis::kSegmentSamplers)
+      Registry::WithEntry(c, [&](auto entry) {
+        Measure<decltype(entry)>(Registry::kRoundTripInDistribution[std::size_t(c.index())], hc, row, n);
+      });
     rows.push_back(row);
   }
 

@@ -13,10 +13,10 @@
 namespace vrlis::test {
 
 template <typename Real>
-using CameraSamplersIn = vrlis::SegmentSamplers::Samplers<Real>;
+using SegmentSamplersIn = vrlis::SegmentSamplers::Samplers<Real>;
 // Every camera sampler in float and in double, for TEMPLATE_LIST_TEST_CASE.
-using CameraSamplerTypes =
-    decltype(std::tuple_cat(std::declval<CameraSamplersIn<float>>(), std::declval<CameraSamplersIn<double>>()));
+using SegmentSamplerTypes =
+    decltype(std::tuple_cat(std::declval<SegmentSamplersIn<float>>(), std::declval<SegmentSamplersIn<double>>()));
 
 template <typename S>
 struct Tag {
@@ -30,8 +30,8 @@ void ForEachType(std::tuple<S...>*, F& f) {
 
 // Calls f(Tag<S>{}) for every camera sampler S in precision Real.
 template <typename Real, typename F>
-void ForEachCameraSampler(F&& f) {
-  ForEachType(static_cast<CameraSamplersIn<Real>*>(nullptr), f);
+void ForEachSegmentSampler(F&& f) {
+  ForEachType(static_cast<SegmentSamplersIn<Real>*>(nullptr), f);
 }
 
 // The position of S in a tuple of types, -1 if absent.
@@ -42,20 +42,28 @@ constexpr int IndexIn(std::tuple<Types...>*) {
   return found;
 }
 
+// Calls f(registry, index) for the registry and position of sampler S.
+template <typename S, typename F>
+constexpr decltype(auto) WithRegistryOf(F&& f) {
+  using Real = typename S::Real;
+  constexpr int segment = IndexIn<S>(static_cast<SegmentSamplersIn<Real>*>(nullptr));
+  constexpr int vrl = IndexIn<S>(static_cast<vrlis::VrlSamplers::Samplers<Real>*>(nullptr));
+  static_assert(segment >= 0 || vrl >= 0, "not a registered sampler");
+  if constexpr (segment >= 0) return f(vrlis::Type<vrlis::SegmentSamplers>{}, std::size_t(segment));
+  else return f(vrlis::Type<vrlis::VrlSamplers>{}, std::size_t(vrl));
+}
+
 // The registry's name of sampler S ("novak", "vrl-point"): method.hpp holds the one name table.
 template <typename S>
 std::string SamplerName() {
-  using Real = typename S::Real;
-  constexpr int camera = IndexIn<S>(static_cast<CameraSamplersIn<Real>*>(nullptr));
-  constexpr int vrl = IndexIn<S>(static_cast<vrlis::VrlSamplers::Samplers<Real>*>(nullptr));
-  static_assert(camera >= 0 || vrl >= 0, "not a registered sampler");
-  if constexpr (camera >= 0) return std::string(vrlis::SegmentSamplers::kNames[camera]);
-  else return std::string(vrlis::VrlSamplers::kNames[vrl]);
+  return WithRegistryOf<S>([](auto registry, std::size_t i) { return std::string(decltype(registry)::type::kNames[i]); });
 }
 
-// Whether sample() is the inverse of invert(): all but the mixture, which picks a component
-// first (see cauchy_mixture.hpp); its round trip is tested in distribution instead.
+// Whether sample() is the inverse of invert() pointwise (the registry's property; where it
+// holds in distribution only, the round trip is tested in distribution instead).
 template <typename S>
-constexpr bool RoundTripsPointwise() { return !std::is_same_v<S, vrlis::CauchyMixture<typename S::Real>>; }
+constexpr bool RoundTripsPointwise() {
+  return WithRegistryOf<S>([](auto registry, std::size_t i) { return !decltype(registry)::type::kRoundTripInDistribution[i]; });
+}
 
 }  // namespace vrlis::test

@@ -1,6 +1,6 @@
 #pragma once
 // Run-time choice among samplers without virtual calls. A registry lists entries, each a
-// struct with a name and a sampler template:
+// struct with a name, a sampler template and the properties it sets (Registry::kOwn below):
 //   struct NovakEntry { static constexpr std::string_view kName = "novak";
 //                       template <typename Real> using Sampler = Novak<Real>; };
 // A Choice is an index into the list; With(choice, query, f) builds the chosen sampler from
@@ -8,8 +8,10 @@
 // the inner loop holds one branch on the index instead of an indirect call.
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 
 #include "query.hpp"
 
@@ -44,6 +46,21 @@ struct RealOf<Query<R>> {
   using type = R;
 };
 
+// An entry's properties, each false unless the entry states it.
+template <typename Entry, typename = void>
+struct Own : std::false_type {};
+template <typename Entry>
+struct Own<Entry, std::void_t<decltype(Entry::kOwn)>> : std::bool_constant<Entry::kOwn> {};
+template <typename Entry, typename = void>
+struct Policy : std::false_type {};
+template <typename Entry>
+struct Policy<Entry, std::void_t<decltype(Entry::kPolicy)>> : std::bool_constant<Entry::kPolicy> {};
+template <typename Entry, typename = void>
+struct RoundTripInDistribution : std::false_type {};
+template <typename Entry>
+struct RoundTripInDistribution<Entry, std::void_t<decltype(Entry::kRoundTripInDistribution)>>
+    : std::bool_constant<Entry::kRoundTripInDistribution> {};
+
 template <typename F, typename Entry, typename... Rest>
 decltype(auto) DispatchEntry(int index, F& f) {
   if constexpr (sizeof...(Rest) == 0) {
@@ -60,6 +77,14 @@ struct Registry {
   using Choice = vrlis::Choice<Registry>;
   static constexpr std::size_t kCount = sizeof...(Entries);
   static constexpr std::array<std::string_view, kCount> kNames = {Entries::kName...};
+  // What the tools, charts and tests know of a sampler beyond its name:
+  // kOwn: this project's sampler rather than a published one;
+  // kPolicy: it chooses among the other samplers per query;
+  // kRoundTripInDistribution: invert(sample(u)) == u holds in distribution only, not pointwise.
+  static constexpr std::array<bool, kCount> kOwn = {detail::Own<Entries>::value...};
+  static constexpr std::array<bool, kCount> kPolicy = {detail::Policy<Entries>::value...};
+  static constexpr std::array<bool, kCount> kRoundTripInDistribution = {
+      detail::RoundTripInDistribution<Entries>::value...};
   // Every sampler in precision Real, as a type list (e.g. for a test over all of them).
   template <typename Real>
   using Samplers = std::tuple<typename Entries::template Sampler<Real>...>;
@@ -81,6 +106,30 @@ struct Registry {
     for (std::size_t i = 0; i < kCount; ++i)
       if (kNames[i] == name) return Choice(static_cast<int>(i));
     return std::nullopt;
+  }
+
+  // The table as JSON, one object per entry: name, label ("full-product" -> "FullProduct"),
+  // own, policy, round_trip ("pointwise" or "distribution"). What the lab's scripts and charts
+  // read (vrl_render --list-samplers, tools/samplers.py) instead of naming samplers themselves.
+  static std::string ListJson() {
+    std::string json = "[";
+    for (std::size_t i = 0; i < kCount; ++i) {
+      std::string label;
+      bool word_start = true;
+      for (char c : kNames[i]) {
+        if (c == '-') {
+          word_start = true;
+          continue;
+        }
+        label += word_start && c >= 'a' && c <= 'z' ? char(c - 'a' + 'A') : c;
+        word_start = false;
+      }
+      auto flag = [](bool b) { return b ? "true" : "false"; };
+      json += std::string(i ? ",\n " : "\n ") + "{\"name\": \"" + std::string(kNames[i]) + "\", \"label\": \"" + label +
+              "\", \"own\": " + flag(kOwn[i]) + ", \"policy\": " + flag(kPolicy[i]) + ", \"round_trip\": \"" +
+              (kRoundTripInDistribution[i] ? "distribution" : "pointwise") + "\"}";
+    }
+    return json + "]";
   }
 
   // Returns f(Entry{}) for the chosen entry: a caller that builds many samplers of one

@@ -214,6 +214,7 @@ using Auto = SegmentSampler<AutoAngle<Real>>;
 // Its entry in the run-time sampler tables (method.hpp).
 struct AutoEntry {
   static constexpr std::string_view kName = "auto";
+  static constexpr bool kOwn = true, kPolicy = true;
   template <typename Real>
   using Sampler = Auto<Real>;
 };

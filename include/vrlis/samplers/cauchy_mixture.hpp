@@ -62,6 +62,7 @@ using CauchyMixture = SegmentSampler<CauchyMixtureAngle<Real>>;
 // Its entry in the run-time sampler tables (method.hpp).
 struct CauchyMixtureEntry {
   static constexpr std::string_view kName = "cauchy-mixture";
+  static constexpr bool kRoundTripInDistribution = true;  // sample() picks a component first
   template <typename Real>
   using Sampler = CauchyMixture<Real>;
 };
