@@ -1,13 +1,35 @@
 #include "vrlis_integration/camera_paths.hpp"
 
+#include <chrono>
+
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
 #include "vrlis_integration/path_tracer.hpp"
 
 namespace vrli {
+namespace {
+
+// Adds the seconds of its scope to *seconds if on (the effort control's cost of a gather).
+class Timer {
+ public:
+  Timer(bool on, double* seconds) : seconds_(on ? seconds : nullptr) {
+    if (seconds_) start_ = std::chrono::steady_clock::now();
+  }
+  ~Timer() {
+    if (seconds_) *seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  Timer(const Timer&) = delete;
+  Timer& operator=(const Timer&) = delete;
+
+ private:
+  double* seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
-                     Rng& rng, GatherCount* count) {
+                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& effort) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   Spectrum L, beta(1.f);
@@ -18,8 +40,11 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) {
-        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta);
-        count->medium_to_medium += vrls.size();
+        const std::uint64_t before = count->effort.gathers;
+        Timer timer(effort.on, &count->effort.seconds);
+        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
+                                         effort.on ? &count->effort : nullptr);
+        count->medium_to_medium += effort.on ? count->effort.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
@@ -46,8 +71,11 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     // The first diffuse vertex ends the camera chain.
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
     if (tr.medium_to_surface && m.Present()) {
-      L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrls, rng);
-      count->medium_to_surface += vrls.size();
+      const std::uint64_t before = count->effort.gathers;
+      Timer timer(effort.on, &count->effort.seconds);
+      L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrls, rng, beta, effort,
+                                        effort.on ? &count->effort : nullptr);
+      count->medium_to_surface += effort.on ? count->effort.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.indirect) {

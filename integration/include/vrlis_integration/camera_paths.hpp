@@ -7,6 +7,7 @@
 
 #include <vrlis/method.hpp>
 
+#include "effort_price.hpp"
 #include "scene.hpp"
 #include "transport.hpp"
 #include "vrl.hpp"
@@ -15,10 +16,12 @@ namespace vrli {
 
 struct GatherCount {
   std::uint64_t medium_to_medium = 0, medium_to_surface = 0;
+  EffortStats effort;  // with the effort control on only
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 
+// `effort`: the transport's effort control with this pixel's price.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls, Ray ray,
-                     Rng& rng, GatherCount* count);
+                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& effort = {});
 
 }  // namespace vrli
