@@ -8,8 +8,6 @@ namespace vrli {
 EffortPrice::EffortPrice(int width, int height)
     : width_(width),
       height_(height),
-      tiles_x_((width + kTile - 1) / kTile),
-      tiles_y_((height + kTile - 1) / kTile),
       sum_(static_cast<std::size_t>(width) * height),
       sum_sq_(sum_.size()) {}
 
@@ -29,41 +27,32 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats&
 
 void EffortPrice::Refresh() {
   const double n = passes_;
-  std::vector<double> tile_variance(static_cast<std::size_t>(tiles_x_) * tiles_y_),
-      tile_square(tile_variance.size());
-  std::vector<std::pair<double, double>> pixels;  // (variance, mean square) of the tile's pixels
-  for (int ty = 0; ty < tiles_y_; ++ty)
-    for (int tx = 0; tx < tiles_x_; ++tx) {
+  // Per 8 x 8 tile the mean variance of its pixels, the largest tenth left out; their mean.
+  std::vector<double> pixels;
+  double variance = 0;
+  int tiles = 0;
+  for (int ty = 0; ty < height_; ty += kTile)
+    for (int tx = 0; tx < width_; tx += kTile) {
       pixels.clear();
-      for (int y = ty * kTile; y < std::min(height_, (ty + 1) * kTile); ++y)
-        for (int x = tx * kTile; x < std::min(width_, (tx + 1) * kTile); ++x) {
+      for (int y = ty; y < std::min(height_, ty + kTile); ++y)
+        for (int x = tx; x < std::min(width_, tx + kTile); ++x) {
           std::size_t i = static_cast<std::size_t>(y) * width_ + x;
           double mean = sum_[i] / n;
-          pixels.push_back({std::max(0.0, (sum_sq_[i] - n * mean * mean) / (n - 1)), mean * mean});
+          pixels.push_back(std::max(0.0, (sum_sq_[i] - n * mean * mean) / (n - 1)));
         }
       std::sort(pixels.begin(), pixels.end());
-      std::size_t kept = pixels.size() - pixels.size() / 10;  // the largest tenth left out
-      double variance = 0, square = 0;
-      for (std::size_t k = 0; k < kept; ++k) variance += pixels[k].first, square += pixels[k].second;
-      std::size_t t = static_cast<std::size_t>(ty) * tiles_x_ + tx;
-      tile_variance[t] = variance / kept;
-      tile_square[t] = square / kept;
+      std::size_t kept = pixels.size() - pixels.size() / 10;
+      double tile = 0;
+      for (std::size_t k = 0; k < kept; ++k) tile += pixels[k];
+      variance += tile / kept;
+      ++tiles;
     }
-  // Relative variance, so that dark tiles count as much as bright ones (EARS); a floor on the
-  // mean square keeps black tiles finite.
-  double mean_square = 0;
-  for (double s : tile_square) mean_square += s;
-  const double epsilon = 1e-4 * mean_square / tile_square.size() + 1e-30;
-  double relative_variance = 0;
-  for (std::size_t t = 0; t < tile_variance.size(); ++t) relative_variance += tile_variance[t] / (tile_square[t] + epsilon);
-  relative_variance /= tile_variance.size();
+  variance /= tiles;
   const double pixel_cost = pixel_seconds_ / (n * sum_.size());
   const double gather_cost = gathers_.gathers > 0 ? gathers_.seconds / double(gathers_.gathers) : 0;
   const double calibration = gathers_.predicted > 0 ? gathers_.measured / gathers_.predicted : 0;
-  price_.assign(tile_variance.size(), 0);
-  if (!(relative_variance > 0) || !(gather_cost > 0) || !(calibration > 0)) return;
-  for (std::size_t t = 0; t < price_.size(); ++t)
-    price_[t] = calibration * pixel_cost / relative_variance / (gather_cost * (tile_square[t] + epsilon));
+  price_ = 0;
+  if (variance > 0 && gather_cost > 0 && calibration > 0) price_ = calibration * pixel_cost / (variance * gather_cost);
 }
 
 }  // namespace vrli

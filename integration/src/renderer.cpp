@@ -14,7 +14,7 @@
 namespace vrli {
 namespace {
 
-// Calls f(x, y, ray, rng) for every pixel, in parallel over rows; the random stream of a
+// Calls f(x, y, rng, ray) for every pixel, in parallel over rows; the random stream of a
 // pixel depends on (seed, pass, pixel) only.
 template <typename F>
 Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f) {
@@ -25,7 +25,7 @@ Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t see
         Rng rng(seed, pass, static_cast<std::uint64_t>(y) * s.width + x, StreamPurpose::Camera);
         float jx = s.jitter ? rng.Uniform() : 0.5f, jy = s.jitter ? rng.Uniform() : 0.5f;
         Ray ray = scene.camera.Generate(x + jx, y + jy, s.width, s.height);
-        film.at(x, y) = f(x, y, ray, rng);
+        film.at(x, y) = f(ray, rng);
       }
       if (s.rows_done) s.rows_done->fetch_add(1, std::memory_order_relaxed);
     }
@@ -50,12 +50,12 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   EffortStats effort_stats;
   std::mutex effort_mutex;
   const vrlis::EffortSettings& effort = settings_.transport.effort;
-  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](int x, int y, const Ray& ray, Rng& rng) {
+  vrlis::EffortSettings pass_effort = effort;
+  pass_effort.price = price_.price();  // from the passes before this one
+  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) {
     GatherCount count;
-    vrlis::EffortSettings pixel_effort = effort;
-    pixel_effort.price = price_.At(x, y);  // from the passes before this one
     auto p0 = effort.on ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, pixel_effort);
+    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, pass_effort);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     if (effort.on) {
       pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
@@ -72,7 +72,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
 Film PathTracingRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
   auto t0 = std::chrono::steady_clock::now();
   PathTracer pt(scene_, settings_.transport);
-  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](int, int, const Ray& ray, Rng& rng) { return pt.Li(ray, rng); });
+  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) { return pt.Li(ray, rng); });
   if (stats) *stats = {0, 0, Since(t0)};
   return film;
 }

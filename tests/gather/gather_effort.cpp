@@ -4,7 +4,7 @@
 //   the control, within 4 standard errors; the same runs with the 1 / q weight left out
 //   (a sabotage) are rejected.
 // - q: 1 with the control off or no price; the floor for a price near zero (gathers whose
-//   variance is nothing next to the image's), the ceiling for a huge one; never NaN.
+//   variance is nothing next to the image's), the ceiling for a huge one; never 0 or NaN.
 // - Every weight handed to the renderer is finite and at most 1 / floor, for prices and
 //   queries at their extremes.
 // - The bounds of effort.hpp are at or above the gather's mean.
@@ -110,7 +110,7 @@ TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][ef
   e.price = 4;
   CHECK(vrlis::EffortQ(e, 1.0) == Approx(2));
   CHECK(vrlis::EffortQ(e, 0.01) == Approx(0.2));
-  CHECK(vrlis::EffortQ(e, 0.0) == 0);  // a bound of zero: nothing to gather
+  CHECK(vrlis::EffortQ(e, 0.0) == e.floor);  // never 0: a bound that rounds to 0 must not drop a gather
   CHECK(vrlis::EffortQ(e, std::numeric_limits<double>::infinity()) == e.ceiling);
   CHECK(vrlis::EffortQ(e, std::numeric_limits<double>::quiet_NaN()) == 1);
   double previous = 0;

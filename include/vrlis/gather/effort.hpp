@@ -2,7 +2,7 @@
 // How often to take one VRL gather (docs/maths.md#effort; Rath et al. 2022, "EARS:
 // Efficiency-Aware Russian Roulette and Splitting"): q = sqrt(price x predicted second
 // moment), clamped to [floor, ceiling], taken floor(q + u) times with weight 1 / q each:
-// Russian roulette below one, splitting above, unbiased for any q > 0.
+// Russian roulette below one, splitting above, unbiased for any q > 0 (and q is never 0).
 #include <algorithm>
 #include <cmath>
 
@@ -31,13 +31,11 @@ struct EffortTally {
   double predicted = 0;
 };
 
-// The expected number of samples of a gather whose second moment is predicted as m2.
-// A prediction of zero is a bound of zero (the gather is zero): no sample at all.
+// The expected number of samples of a gather whose second moment is predicted as m2. Never
+// zero: a prediction that rounds to zero must not drop a gather that is not (a bias).
 inline double EffortQ(const EffortSettings& e, double m2) {
-  if (!e.on || !(e.price > 0) || !std::isfinite(e.price)) return 1;
-  if (std::isnan(m2)) return 1;
-  if (!(m2 > 0)) return 0;
-  double q = std::sqrt(e.price * m2);
+  if (!e.on || !(e.price > 0) || !std::isfinite(e.price) || std::isnan(m2)) return 1;
+  double q = std::sqrt(e.price * std::max(m2, 0.0));
   return std::isfinite(q) ? std::clamp(q, e.floor, e.ceiling) : e.ceiling;
 }
 
@@ -45,50 +43,72 @@ inline double EffortQ(const EffortSettings& e, double m2) {
 inline int EffortSamples(double q, double u) { return static_cast<int>(std::floor(q + u)); }
 
 namespace detail {
+// The Henyey-Greenstein phase function's largest value, at cos = sign(g).
 template <typename Real>
 Real PhaseMax(Real g) {
   return HenyeyGreenstein(std::abs(g), Real(0), Real(2));
 }
 // Int_0^len dv / h(v) with h(v)^2 = r^2 + s^2 (v - v0)^2: the distance from y(v) to a line at
 // closest distance r, crossing at angle asin(s) where the VRL is at v0.
+// (In double: near-parallel lines put v0 far away, and the two terms nearly cancel.)
 template <typename Real>
 Real InverseDistanceIntegral(Real r, Real s, Real v0, Real len) {
   if (s < Real(1e-4)) return len / r;
-  return (std::asinh(s * (len - v0) / r) + std::asinh(s * v0 / r)) / s;
+  double a = double(s) / r;
+  return Real((std::asinh(a * (double(len) - v0)) + std::asinh(a * v0)) / s);
 }
 }  // namespace detail
 
-// A bound of the medium-to-medium gather's mean, Int Int f du dv over both segments (the
-// integrand of medium_gather.hpp): both phase values by their maximum, the segments'
-// transmittances by one, the connection's by exp(-sigma_t r) and 1 / |w|^2 by the smaller of
-// 1 / r^2 over both lengths and pi / h(v) integrated along the VRL, r the distance between
-// the two lines. Cheap: no sampler is built.
+// The camera segment's and the VRL's lines: their distance r, the sine s of the angle
+// between them and the VRL's parameter v0 where it comes closest to the camera line.
 template <typename Real>
-Real MediumGatherBound(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
+struct ClosestApproach {
+  Real r = 0, s = 0, v0 = 0;
+};
+
+template <typename Real>
+ClosestApproach<Real> Closest(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl) {
   Vec3<Real> n = Cross(camera.dir, vrl.dir), w0 = vrl.origin - camera.origin;
-  Real s = Length(n);
+  ClosestApproach<Real> c;
+  c.s = Length(n);
   Real b = Dot(camera.dir, vrl.dir);
-  // The VRL's parameter closest to the camera line, and the lines' distance.
-  Real v0 = s < Real(1e-4) ? Real(0) : (b * Dot(camera.dir, w0) - Dot(vrl.dir, w0)) / (s * s);
-  Real r = s < Real(1e-4) ? Length(Cross(w0, camera.dir)) : std::abs(Dot(w0, n)) / s;
-  r = std::max(r, Real(1e-6));
-  Real length_c = camera.tmax - camera.tmin;
-  Real geometry = std::min(length_c * vrl.length / (r * r),
-                           kPi<Real> * detail::InverseDistanceIntegral(r, s, v0, vrl.length));
-  return Sqr(m.sigma_s * detail::PhaseMax(m.g)) * std::exp(-m.sigma_t * r) * geometry;
+  bool parallel = c.s < Real(1e-4);
+  c.v0 = parallel ? vrl.length / 2 : (b * Dot(camera.dir, w0) - Dot(vrl.dir, w0)) / (c.s * c.s);
+  c.r = std::max(parallel ? Length(Cross(w0, camera.dir)) : std::abs(Dot(w0, n)) / c.s, Real(1e-6));
+  return c;
 }
 
-// A bound of the medium-to-surface gather's mean, Int f dv (surface_gather.hpp, without
-// the albedo): zero when the whole VRL is behind the surface, else the phase by its maximum,
-// the cosine and the VRL's transmittance by one, 1 / |w|^2 by min(1 / h^2, ...) integrated,
-// h the distance from the point to the VRL's line.
+// A bound of Int Int du dv / |w|^2 over both segments: the smaller of 1 / r^2 over both
+// lengths and pi / h(v) integrated along the VRL (h(v) the distance from y(v) to the camera line).
+template <typename Real>
+Real InverseSquareBound(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl, const ClosestApproach<Real>& c) {
+  return std::min((camera.tmax - camera.tmin) * vrl.length / (c.r * c.r),
+                  kPi<Real> * detail::InverseDistanceIntegral(c.r, c.s, c.v0, vrl.length));
+}
+
+// A bound of the medium-to-medium gather's mean, Int Int f du dv over both segments (the
+// integrand of medium_gather.hpp): both phases by their maximum, the segments' transmittances
+// by one, the connection's by exp(-sigma_t r), 1 / |w|^2 by InverseSquareBound. Cheap: no
+// sampler. (The phases at the closest points instead, a prediction rather than a bound,
+// ranked gathers worse: docs/maths.md#effort.)
+template <typename Real>
+Real MediumGatherBound(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
+  ClosestApproach<Real> c = Closest(camera, vrl);
+  return Sqr(m.sigma_s * detail::PhaseMax(m.g)) * std::exp(-m.sigma_t * c.r) * InverseSquareBound(camera, vrl, c);
+}
+
+// A bound of the medium-to-surface gather's mean, Int f dv (surface_gather.hpp, without the
+// albedo): zero when the whole VRL is behind the surface (then so is the gather; it is still
+// taken at the floor's rate), else the phase by its maximum, the cosine and the VRL's transmittance by one, the connection's by
+// exp(-sigma_t h) and Int dv / |w|^2 by min(length / h^2, pi / h), h the distance from the
+// point to the VRL's line.
 template <typename Real>
 Real SurfaceGatherBound(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
   Vec3<Real> w0 = vrl.origin - point;
   if (!(Dot(normal, w0) > 0) && !(Dot(normal, w0 + vrl.length * vrl.dir) > 0)) return 0;
   Real h = std::max(Length(Cross(w0, vrl.dir)), Real(1e-6));
-  Real geometry = std::min(vrl.length / (h * h), kPi<Real> / h);
-  return m.sigma_s * detail::PhaseMax(m.g) * kInvPi<Real> * std::exp(-m.sigma_t * h) * geometry;
+  return m.sigma_s * detail::PhaseMax(m.g) * kInvPi<Real> * std::exp(-m.sigma_t * h) *
+         std::min(vrl.length / (h * h), kPi<Real> / h);
 }
 
 }  // namespace vrlis

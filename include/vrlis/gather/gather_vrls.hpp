@@ -34,7 +34,7 @@ struct GatherBatch {
   int count = 0;
 };
 
-// The loop shared by both gathers: predict(i) is VRL i's unweighted bound (effort.hpp),
+// The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp),
 // gather(batch, samples) samples a batch. A batch is run when full and after every kSize
 // VRLs, so that with the control off the batches are those of one gather per VRL.
 template <int kUniforms, typename Real, typename Uniform, typename Predict, typename Gather, typename Connect>
@@ -54,9 +54,9 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     int n = 1;
     Real weight = 1;
     if (effort.on) {
-      double bound = usable ? double(weights[i]) * double(predict(i)) : 0;
-      if (tally) tally->predicted += bound * bound;
-      double q = EffortQ(effort, bound * bound);
+      double mean = usable ? double(weights[i]) * double(predict(i)) : 0;  // its bound
+      if (tally) tally->predicted += mean * mean;
+      double q = EffortQ(effort, mean * mean);
       n = EffortSamples(q, double(uniform()));
       weight = n > 0 ? Real(1 / q) : Real(0);
     }

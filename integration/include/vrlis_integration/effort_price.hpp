@@ -1,9 +1,9 @@
 #pragma once
 // The image-level price of variance behind the effort control (docs/maths.md#effort), learned
-// from the passes already rendered: per 8 x 8 tile the relative variance of one pass's pixel
-// estimate and its mean square, the largest tenth of the tile's pixels left out (a few
-// fireflies must not flip decisions); the time a pixel and a gather cost. A pass's decisions
-// read the price of the passes before it only: the renderer adds a pass after rendering it.
+// from the passes already rendered: the variance of one pass's pixel estimate, per 8 x 8 tile
+// with the largest tenth of its pixels left out (a few fireflies must not flip decisions),
+// and the time a pixel and a gather cost. A pass's decisions read the price of the passes
+// before it only: the renderer adds a pass after rendering it.
 #include <cstdint>
 #include <vector>
 
@@ -31,21 +31,20 @@ class EffortPrice {
   // One finished pass: its image, the seconds its pixels took (summed over threads) and
   // what its gathers tell.
   void Add(const Film& pass, double pixel_seconds, const EffortStats& gathers);
-  // The price for a gather at pixel (x, y): (image cost / image variance) / (gather cost x
-  // the tile's mean square) x (measured / predicted second moments), in 1 / (predicted second
-  // moment); 0 before kMinPasses passes (every gather taken once).
-  double At(int x, int y) const { return price_.empty() ? 0 : price_[Tile(x, y)]; }
+  // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
+  // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
+  // gather taken once).
+  double price() const { return price_; }
   int passes() const { return passes_; }
 
  private:
-  std::size_t Tile(int x, int y) const { return static_cast<std::size_t>(y / kTile) * tiles_x_ + x / kTile; }
   void Refresh();
 
-  int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0, passes_ = 0;
+  int width_ = 0, height_ = 0, passes_ = 0;
   std::vector<double> sum_, sum_sq_;  // per pixel, of one pass's RMS RGB value
   double pixel_seconds_ = 0;
   EffortStats gathers_;
-  std::vector<double> price_;  // per tile
+  double price_ = 0;
 };
 
 }  // namespace vrli
