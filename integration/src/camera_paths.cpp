@@ -29,7 +29,8 @@ class Timer {
 }  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
-                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& effort) {
+                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
+                     const vrlis::EffortSettings& surface_effort) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   Spectrum L, beta(1.f);
@@ -40,11 +41,13 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) {
-        const std::uint64_t before = count->effort.gathers;
-        Timer timer(effort.on, &count->effort.seconds);
+        const vrlis::EffortSettings& effort = medium_effort;
+        EffortStats& stats = count->medium_effort;
+        const std::uint64_t before = stats.gathers;
+        Timer timer(effort.on, &stats.seconds);
         L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
-                                         effort.on ? &count->effort : nullptr);
-        count->medium_to_medium += effort.on ? count->effort.gathers - before : vrls.size();
+                                         effort.on ? &stats : nullptr);
+        count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.camera, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
@@ -71,11 +74,13 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     // The first diffuse vertex ends the camera chain.
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
     if (tr.medium_to_surface && m.Present()) {
-      const std::uint64_t before = count->effort.gathers;
-      Timer timer(effort.on, &count->effort.seconds);
+      const vrlis::EffortSettings& effort = surface_effort;
+      EffortStats& stats = count->surface_effort;
+      const std::uint64_t before = stats.gathers;
+      Timer timer(effort.on, &stats.seconds);
       L += beta * GatherMediumToSurface(tr.sampling.camera, scene, hit.p, nf, mat.albedo, vrls, rng, beta, effort,
-                                        effort.on ? &count->effort : nullptr);
-      count->medium_to_surface += effort.on ? count->effort.gathers - before : vrls.size();
+                                        effort.on ? &stats : nullptr);
+      count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.indirect) {

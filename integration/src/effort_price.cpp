@@ -11,7 +11,7 @@ EffortPrice::EffortPrice(int width, int height)
       sum_(static_cast<std::size_t>(width) * height),
       sum_sq_(sum_.size()) {}
 
-void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats& gathers) {
+void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats& medium, const EffortStats& surface) {
   for (std::size_t i = 0; i < sum_.size(); ++i) {
     const Spectrum& s = pass.pixels[i];
     double v = std::sqrt((double(s.r) * s.r + double(s.g) * s.g + double(s.b) * s.b) / 3);
@@ -20,7 +20,8 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats&
     sum_sq_[i] += v * v;
   }
   pixel_seconds_ += pixel_seconds;
-  gathers_ += gathers;
+  gathers_[0] += medium;
+  gathers_[1] += surface;
   ++passes_;
   if (passes_ >= kMinPasses) Refresh();
 }
@@ -49,10 +50,14 @@ void EffortPrice::Refresh() {
     }
   variance /= tiles;
   const double pixel_cost = pixel_seconds_ / (n * sum_.size());
-  const double gather_cost = gathers_.gathers > 0 ? gathers_.seconds / double(gathers_.gathers) : 0;
-  const double calibration = gathers_.predicted > 0 ? gathers_.measured / gathers_.predicted : 0;
-  price_ = 0;
-  if (variance > 0 && gather_cost > 0 && calibration > 0) price_ = calibration * pixel_cost / (variance * gather_cost);
+  for (int kind = 0; kind < 2; ++kind) {
+    const EffortStats& g = gathers_[kind];
+    const double gather_cost = g.gathers > 0 ? g.seconds / double(g.gathers) : 0;
+    const double calibration = g.predicted > 0 ? g.measured / g.predicted : 0;
+    price_[kind] = variance > 0 && gather_cost > 0 && calibration > 0
+                       ? calibration * pixel_cost / (variance * gather_cost)
+                       : 0;
+  }
 }
 
 }  // namespace vrli

@@ -46,7 +46,8 @@ TEST_CASE("a pass's effort decisions come from the passes before it", "[render][
   for (std::uint64_t pass = 0; pass < 3; ++pass) a.RenderPass(1, pass, nullptr);
   const vrli::EffortPrice learned = a.effort_price();
   REQUIRE(learned.passes() == 3);
-  REQUIRE(learned.price() > 0);
+  REQUIRE(learned.price(vrli::GatherKind::Medium) > 0);
+  REQUIRE(learned.price(vrli::GatherKind::Surface) > 0);
   const vrli::Film original = a.RenderPass(1, 3, nullptr);
   for (int threads : {1, 4}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));

@@ -16,12 +16,13 @@ namespace vrli {
 
 struct GatherCount {
   std::uint64_t medium_to_medium = 0, medium_to_surface = 0;
-  EffortStats effort;  // with the effort control on only
+  EffortStats medium_effort, surface_effort;  // with the effort control on only
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 
-// `effort`: the transport's effort control with this pixel's price.
+// The transport's effort control with the pass's prices of the two gathers.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls, Ray ray,
-                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& effort = {});
+                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort = {},
+                     const vrlis::EffortSettings& surface_effort = {});
 
 }  // namespace vrli

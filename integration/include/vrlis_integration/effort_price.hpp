@@ -21,6 +21,9 @@ struct EffortStats {
   }
 };
 
+// The two gathers, each with its own calibration and cost: their bounds are not equally tight.
+enum class GatherKind { Medium, Surface };
+
 class EffortPrice {
  public:
   static constexpr int kTile = 8;
@@ -29,12 +32,12 @@ class EffortPrice {
   EffortPrice() = default;
   EffortPrice(int width, int height);
   // One finished pass: its image, the seconds its pixels took (summed over threads) and
-  // what its gathers tell.
-  void Add(const Film& pass, double pixel_seconds, const EffortStats& gathers);
+  // what its medium-to-medium and medium-to-surface gathers tell.
+  void Add(const Film& pass, double pixel_seconds, const EffortStats& medium, const EffortStats& surface);
   // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
   // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
   // gather taken once).
-  double price() const { return price_; }
+  double price(GatherKind kind) const { return price_[static_cast<int>(kind)]; }
   int passes() const { return passes_; }
 
  private:
@@ -43,8 +46,8 @@ class EffortPrice {
   int width_ = 0, height_ = 0, passes_ = 0;
   std::vector<double> sum_, sum_sq_;  // per pixel, of one pass's RMS RGB value
   double pixel_seconds_ = 0;
-  EffortStats gathers_;
-  double price_ = 0;
+  EffortStats gathers_[2];
+  double price_[2] = {0, 0};
 };
 
 }  // namespace vrli
