@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
-  std::string dump_queries;
+  std::string dump_queries, effort = "off";
   bool no_jitter = false, no_caustics = false, quiet = false, json = false;
 
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
@@ -117,6 +117,9 @@ int main(int argc, char** argv) {
                                                "of light paths each)")->capture_default_str();
   app.add_option("--time", seconds, "Render for this many seconds instead of --spp passes")->excludes(spp_opt);
   app.add_option("--vrls", vrls, "Light paths per pass")->capture_default_str();
+  app.add_option("--effort", effort, "on: Russian roulette and splitting of every VRL gather by a price of variance "
+                                     "learned from earlier passes (docs/maths.md#effort); off: every VRL gathered once")
+      ->capture_default_str();
   app.add_option("--seed", seed, "Random seed: the same seed gives the same image at any thread count")
       ->capture_default_str();
   app.add_option("--threads", threads, "Worker threads (0: all cores)")->capture_default_str();
@@ -163,6 +166,7 @@ int main(int argc, char** argv) {
   if (spp < 1) return Fail("--spp must be positive");
   if (app.count("--time") && !(seconds > 0 && std::isfinite(seconds))) return Fail("--time must be positive");
   if (vrls < 1) return Fail("--vrls must be positive");
+  if (effort != "on" && effort != "off") return Fail("unknown --effort '" + effort + "' (expected on or off)");
   if (threads < 0) return Fail("--threads must be >= 0");
   if (dump_every < 1) return Fail("--dump-every must be positive");
   if (!dump_queries.empty() && integrator != "vrl") return Fail("--dump-queries needs --integrator vrl");
@@ -194,6 +198,7 @@ int main(int argc, char** argv) {
   settings.transport = built->transport;
   settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
+  settings.transport.effort.on = effort == "on";
   std::atomic<int> rows_done{0};
   settings.rows_done = &rows_done;
   if (gather != "all") {
@@ -249,7 +254,7 @@ int main(int argc, char** argv) {
   vrlis::integration::Film image = acc.Mean();
 
   nlohmann::json summary = {
-      {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather},
+      {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather}, {"effort", effort},
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
       {"jitter", !no_jitter}, {"caustics", !no_caustics}, {"passes", acc.passes()}, {"vrl_count", vrl_count},

@@ -19,6 +19,8 @@
 #include "gather/medium_gather.hpp"
 #include "gather/surface_gather.hpp"
 #include "gather/point_light_gather.hpp"
+#include "gather/effort.hpp"
+#include "gather/gather_vrls.hpp"
 
 namespace vrlis {
 static_assert(IsSegmentSampler<Equiangular<float>>::value && IsSegmentSampler<Equiangular<double>>::value);

@@ -1,13 +1,36 @@
 #include "vrlis_integration/camera_paths.hpp"
 
+#include <chrono>
+
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
 #include "vrlis_integration/path_tracer.hpp"
 
 namespace vrlis::integration {
+namespace {
+
+// Adds the seconds of its scope to *seconds if on (the effort control's cost of a gather).
+class Timer {
+ public:
+  Timer(bool on, double* seconds) : seconds_(on ? seconds : nullptr) {
+    if (seconds_) start_ = std::chrono::steady_clock::now();
+  }
+  ~Timer() {
+    if (seconds_) *seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  Timer(const Timer&) = delete;
+  Timer& operator=(const Timer&) = delete;
+
+ private:
+  double* seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
-                     Rng& rng, GatherCount* count) {
+                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
+                     const vrlis::EffortSettings& surface_effort) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   Spectrum L, beta(1.f);
@@ -18,8 +41,13 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) {
-        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta);
-        count->medium_to_medium += vrls.size();
+        const vrlis::EffortSettings& effort = medium_effort;
+        EffortStats& stats = count->medium_effort;
+        const std::uint64_t before = stats.gathers;
+        Timer timer(effort.on, &stats.seconds);
+        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
+                                         effort.on ? &stats : nullptr);
+        count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
@@ -46,8 +74,13 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     // The first diffuse vertex ends the camera chain.
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
     if (tr.medium_to_surface && m.Present()) {
-      L += beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng);
-      count->medium_to_surface += vrls.size();
+      const vrlis::EffortSettings& effort = surface_effort;
+      EffortStats& stats = count->surface_effort;
+      const std::uint64_t before = stats.gathers;
+      Timer timer(effort.on, &stats.seconds);
+      L += beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta, effort,
+                                        effort.on ? &stats : nullptr);
+      count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.indirect) {

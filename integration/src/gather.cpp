@@ -1,8 +1,8 @@
 #include "vrlis_integration/gather.hpp"
 
+#include <vrlis/gather/gather_vrls.hpp>
 #include <vrlis/gather/medium_gather.hpp>
 #include <vrlis/gather/point_light_gather.hpp>
-#include <vrlis/gather/surface_gather.hpp>
 
 namespace vrlis::integration {
 namespace {
@@ -35,92 +35,82 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 
 namespace {
 
-// A batch of VRLs for one of the library's batched gathers: the valid ones, their random
-// numbers (u[k][i]: the k-th of VRL i) and the VRLs they came from.
-template <int kUniforms>
-struct VrlBatch {
-  static constexpr int kSize = vrlis::kVrlPointBatch;
-  vrlis::VrlSegment<float> segments[kSize];
-  float u[kUniforms][kSize];
-  const Vrl* source[kSize];
-  int count = 0;
-};
+// The library's one-call gathers over VRLs [first, last), kChunk at a time (a multiple of
+// the library's batch, so that images do not depend on it): segments and predicted weights
+// on the stack, the scene's visibility as the callback.
+constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
-// sum flux * Connect over the VRLs [first, last), a batch at a time: gather(batch, samples)
-// samples the batch; on_vrl(segment, vrl) sees every VRL, valid or not. kUniforms random
-// numbers are drawn for every VRL, so images do not depend on batching or validity.
-template <int kUniforms, typename OnVrl, typename Gather>
-Spectrum SumOverBatches(const Scene& scene, const Vrl* first, const Vrl* last, bool valid, Rng& rng, OnVrl&& on_vrl,
-                        Gather&& gather) {
-  using Batch = VrlBatch<kUniforms>;
+template <typename GatherChunk>
+Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput, EffortStats* stats,
+                       GatherChunk&& gather_chunk) {
   Spectrum sum;
-  for (std::ptrdiff_t begin = 0; begin < last - first; begin += Batch::kSize) {
-    Batch batch;
-    for (const Vrl* vrl = first + begin; vrl != first + std::min(begin + Batch::kSize, last - first); ++vrl) {
-      float u[kUniforms];
-      for (float& x : u) x = rng.Uniform();
-      vrlis::VrlSegment<float> segment = SegmentOf(*vrl);
-      on_vrl(segment, *vrl);
-      if (!valid || vrlis::Validate(segment) != vrlis::QueryError::None) continue;
-      batch.segments[batch.count] = segment;
-      for (int k = 0; k < kUniforms; ++k) batch.u[k][batch.count] = u[k];
-      batch.source[batch.count++] = vrl;
+  vrlis::EffortTally tally;
+  EffortStats taken;
+  for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
+    const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
+    vrlis::VrlSegment<float> segments[kChunk];
+    float weights[kChunk];
+    for (int i = 0; i < n; ++i) {
+      segments[i] = SegmentOf(chunk[i]);
+      weights[i] = RmsRgb(throughput * chunk[i].flux);
     }
-    vrlis::GatherSample<float> samples[Batch::kSize];
-    gather(batch, samples);
-    for (int i = 0; i < batch.count; ++i) sum += batch.source[i]->flux * Connect(scene, samples[i]);
+    auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
+      Spectrum x = chunk[i].flux * (Connect(scene, s) * effort_weight);
+      sum += x;
+      if (!stats) return;
+      ++taken.gathers;
+      double contribution = RmsRgb(throughput * x);
+      taken.measured += contribution * contribution / effort_weight;  // weight x (x / weight)^2
+    };
+    gather_chunk(segments, weights, n, connect, stats ? &tally : nullptr);
+  }
+  if (stats) {
+    taken.predicted = tally.predicted;
+    *stats += taken;
   }
   return sum;
 }
 
-// The medium-to-medium sum over the VRLs [first, last): the samplers are chosen and the
-// camera segment and medium validated once for all of them.
+// The medium-to-medium sum over the VRLs [first, last).
 Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
-                    const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput) {
+                    const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput,
+                    const vrlis::EffortSettings& effort, EffortStats* stats) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
-  const bool valid = vrlis::Validate(camera) == vrlis::QueryError::None &&
-                     vrlis::Validate(medium) == vrlis::QueryError::None;
-  return vrlis::WithGatherSamplers<float>(method, [&](auto step_one, auto step_two) {
-    using StepOne = typename decltype(step_one)::type;
-    using StepTwo = typename decltype(step_two)::type;
-    return SumOverBatches<2>(
-        scene, first, last, valid, rng,
-        [&](const vrlis::VrlSegment<float>& segment, const Vrl& vrl) {
-          if (log) log->Record({camera, segment, medium}, RmsRgb(throughput * vrl.flux));
-        },
-        [&](const VrlBatch<2>& b, vrlis::GatherSample<float>* samples) {
-          vrlis::SampleMediumGathers<StepOne, StepTwo>(vrlis::ValidQuery{}, camera, medium, b.segments, b.count, b.u[0],
-                                                       b.u[1], samples);
-        });
-  });
+  if (log)
+    for (const Vrl* vrl = first; vrl != last; ++vrl)
+      log->Record({camera, SegmentOf(*vrl), medium}, RmsRgb(throughput * vrl->flux));
+  return SumOverChunks(scene, first, last, throughput, stats,
+                       [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
+                           vrlis::EffortTally* tally) {
+                         vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
+                                                 [&] { return rng.Uniform(); }, connect, tally);
+                       });
 }
 
 }  // namespace
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
-  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput);
+  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr);
 }
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
-                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput) {
-  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput);
+                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput,
+                              const vrlis::EffortSettings& effort, EffortStats* stats) {
+  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats);
 }
 
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
-                               const std::vector<Vrl>& vrls, Rng& rng) {
+                               const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
+                               const vrlis::EffortSettings& effort, EffortStats* stats) {
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
-  const bool valid = vrlis::ValidateSurfacePoint(p, nf) == vrlis::QueryError::None &&
-                     vrlis::Validate(medium) == vrlis::QueryError::None;
-  return albedo * vrlis::SegmentSamplers::WithEntry(method, [&](auto entry) {
-    using Sampler = typename decltype(entry)::template Sampler<float>;
-    return SumOverBatches<1>(
-        scene, vrls.data(), vrls.data() + vrls.size(), valid, rng, [](const vrlis::VrlSegment<float>&, const Vrl&) {},
-        [&](const VrlBatch<1>& b, vrlis::GatherSample<float>* samples) {
-          vrlis::SampleSurfaceGathers<Sampler>(vrlis::ValidQuery{}, p, nf, medium, b.segments, b.count, b.u[0], samples);
-        });
-  });
+  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, stats,
+                                [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
+                                    auto& connect, vrlis::EffortTally* tally) {
+                                  vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,
+                                                           [&] { return rng.Uniform(); }, connect, tally);
+                                });
 }
 
 Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng) {

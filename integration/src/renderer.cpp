@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <mutex>
 
 #include "vrlis_integration/camera_paths.hpp"
 #include "vrlis_integration/light_paths.hpp"
@@ -44,12 +45,28 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
                               ? TraceLightPaths(scene_, settings_.transport, settings_.vrls_per_pass, seed, pass)
                               : std::vector<Vrl>{};
   std::atomic<std::uint64_t> gathers{0};
+  // What the price learns from this pass, with the effort control on only.
+  std::atomic<std::uint64_t> pixel_ns{0};
+  EffortStats medium_stats, surface_stats;
+  std::mutex effort_mutex;
+  const vrlis::EffortSettings& effort = settings_.transport.effort;
+  vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
+  medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
+  surface_effort.price = price_.price(GatherKind::Surface);
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) {
     GatherCount count;
-    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count);
+    auto p0 = effort.on ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, medium_effort, surface_effort);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
+    if (effort.on) {
+      pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
+      std::lock_guard<std::mutex> lock(effort_mutex);
+      medium_stats += count.medium_effort;
+      surface_stats += count.surface_effort;
+    }
     return L;
   });
+  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats, surface_stats);
   if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
   return film;
 }

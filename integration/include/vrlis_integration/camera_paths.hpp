@@ -7,6 +7,7 @@
 
 #include <vrlis/method.hpp>
 
+#include "effort_price.hpp"
 #include "scene.hpp"
 #include "transport.hpp"
 #include "vrl.hpp"
@@ -15,10 +16,13 @@ namespace vrlis::integration {
 
 struct GatherCount {
   std::uint64_t medium_to_medium = 0, medium_to_surface = 0;
+  EffortStats medium_effort, surface_effort;  // with the effort control on only
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 
+// The transport's effort control with the pass's prices of the two gathers.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls, Ray ray,
-                     Rng& rng, GatherCount* count);
+                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort = {},
+                     const vrlis::EffortSettings& surface_effort = {});
 
 }  // namespace vrlis::integration

@@ -1,10 +1,12 @@
 #pragma once
 // The VRL estimators of docs/maths.md#estimators, one sample each, as a renderer uses the
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
+#include <vrlis/gather/effort.hpp>
 #include <vrlis/method.hpp>
 
 #include <vector>
 
+#include "effort_price.hpp"
 #include "query_log.hpp"
 #include "scene.hpp"
 #include "vrl.hpp"
@@ -25,11 +27,13 @@ Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, 
                               const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
 
 // The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
-// order: the camera pass's inner loop. The samplers are chosen and the camera segment and
-// medium validated once for all the VRLs.
+// order: the camera pass's inner loop, one call of the library's GatherMediumVrls. With the
+// effort control (vrlis/gather/effort.hpp) each VRL is gathered q times on average, q from its
+// predicted contribution throughput x flux; `stats`, if set, adds what the price learns from.
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
-                              Spectrum throughput = Spectrum(1.f));
+                              Spectrum throughput = Spectrum(1.f), const vrlis::EffortSettings& effort = {},
+                              EffortStats* stats = nullptr);
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
@@ -37,9 +41,11 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
-// each): the sampler is chosen and the point and medium validated once for all the VRLs.
+// each): the sampler is chosen and the point and medium validated once for all the VRLs
+// (the library's GatherSurfaceVrls; effort and stats as in GatherMediumToMedium).
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
-                               const std::vector<Vrl>& vrls, Rng& rng);
+                               const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput = Spectrum(1.f),
+                               const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance).

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 
+#include "effort_price.hpp"
 #include "film.hpp"
 #include "scene.hpp"
 #include "transport.hpp"
@@ -39,11 +40,20 @@ class Renderer {
   RenderSettings settings_;
 };
 
-// The bidirectional VRL pipeline: light pass, then camera pass.
+// The bidirectional VRL pipeline: light pass, then camera pass. With the transport's effort
+// control on, the renderer learns the price of variance from each pass it renders and the
+// next pass's gathers use it: a pass then depends on the passes this renderer rendered
+// before it (and on their measured times), not on (seed, pass) alone.
 class VrlRenderer : public Renderer {
  public:
-  using Renderer::Renderer;
+  VrlRenderer(const Scene& scene, const RenderSettings& settings)
+      : Renderer(scene, settings), price_(settings.width, settings.height) {}
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
+  const EffortPrice& effort_price() const { return price_; }
+  void set_effort_price(const EffortPrice& price) { price_ = price; }
+
+ private:
+  EffortPrice price_;
 };
 
 // The reference: a volumetric path tracer with next-event estimation.

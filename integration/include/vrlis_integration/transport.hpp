@@ -1,6 +1,7 @@
 #pragma once
 // Which parts of light transport a render computes (see docs/renderer.md for how the parts
 // add up to the whole without counting a path twice).
+#include <vrlis/gather/effort.hpp>
 #include <vrlis/method.hpp>
 
 namespace vrlis::integration {
@@ -26,6 +27,9 @@ struct TransportSettings {
   int max_depth = 100;              // interactions per path (camera or light side)
   int rr_depth = 3;                 // Russian roulette from this depth on
   QueryLog* query_log = nullptr;    // if set, records a sample of the medium-to-medium gathers
+  // The effort control of both VRL gathers (off: every VRL gathered once); its price is the
+  // renderer's, learned pass by pass (effort_price.hpp).
+  vrlis::EffortSettings effort;
 };
 
 }  // namespace vrlis::integration

@@ -1,0 +1,121 @@
+#pragma once
+// Every VRL against one camera segment, or one surface point, in one call: the query's
+// shared parts validated and the samplers chosen once, the effort decision per VRL
+// (effort.hpp), the gathers run in batches by SampleMediumGathers / SampleSurfaceGathers,
+// and each sample handed to the renderer, which traces its occlusion ray:
+//
+//   vrlis::GatherMediumVrls(method, effort, camera, medium, vrls, weights, n, uniform,
+//       [&](int i, const vrlis::GatherSample<float>& s, float w) {
+//         if (s.contributes() && visible(s.camera_point, s.light_point)) sum += w * s.weight * flux[i];
+//       });
+//
+// weights[i] >= 0 scales VRL i's predicted contribution (its power times the camera path's
+// throughput, in the units of the price); unused with the effort control off. uniform()
+// returns a number in [0, 1). With the control off every VRL draws exactly its gather's
+// numbers (two, or one at a surface), in order, valid or not, so images do not depend on
+// batching or validity; with it on each also draws one for its number of samples first.
+#include <algorithm>
+
+#include "effort.hpp"
+#include "medium_gather.hpp"
+#include "surface_gather.hpp"
+
+namespace vrlis {
+namespace detail {
+
+// Samples of VRLs waiting for their batched gather: VRL index, effort weight, numbers.
+template <typename Real, int kUniforms>
+struct GatherBatch {
+  static constexpr int kSize = kVrlPointBatch;
+  VrlSegment<Real> segments[kSize];
+  Real u[kUniforms][kSize];
+  int source[kSize];
+  Real effort_weight[kSize];
+  int count = 0;
+};
+
+// The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp),
+// gather(batch, samples) samples a batch. A batch is run when full and after every kSize
+// VRLs, so that with the control off the batches are those of one gather per VRL.
+template <int kUniforms, typename Real, typename Uniform, typename Predict, typename Gather, typename Connect>
+void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights, int count,
+                   bool valid, Uniform& uniform, Predict&& predict, Gather&& gather, Connect& connect,
+                   EffortTally* tally) {
+  using Batch = GatherBatch<Real, kUniforms>;
+  Batch batch;
+  auto run = [&] {
+    GatherSample<Real> samples[Batch::kSize];
+    gather(batch, samples);
+    for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
+    batch.count = 0;
+  };
+  for (int i = 0; i < count; ++i) {
+    const bool usable = valid && Validate(vrls[i]) == QueryError::None;
+    int n = 1;
+    Real weight = 1;
+    if (effort.on) {
+      double mean = usable ? double(weights[i]) * double(predict(i)) : 0;  // its bound
+      if (tally) tally->predicted += mean * mean;
+      double q = EffortQ(effort, mean * mean);
+      n = EffortSamples(q, double(uniform()));
+      weight = n > 0 ? Real(1 / q) : Real(0);
+    }
+    for (int j = 0; j < n; ++j) {
+      Real u[kUniforms];
+      for (Real& x : u) x = uniform();
+      if (!usable) continue;
+      if (batch.count == Batch::kSize) run();
+      batch.segments[batch.count] = vrls[i];
+      for (int k = 0; k < kUniforms; ++k) batch.u[k][batch.count] = u[k];
+      batch.source[batch.count] = i;
+      batch.effort_weight[batch.count++] = weight;
+    }
+    if ((i + 1) % Batch::kSize == 0 && batch.count > 0) run();
+  }
+  if (batch.count > 0) run();
+}
+
+}  // namespace detail
+
+// The medium-to-medium gathers of vrls[0, count) against the camera segment:
+// connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
+// tally, if set, adds the predictions (effort on only).
+template <typename Real, typename Uniform, typename Connect>
+void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
+                      const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,
+                      Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr) {
+  const bool valid = Validate(camera) == QueryError::None && Validate(medium) == QueryError::None;
+  WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
+    using VrlSampler = typename decltype(step_one)::type;
+    using StepTwo = typename decltype(step_two)::type;
+    detail::GatherEachVrl<2>(
+        effort, vrls, weights, count, valid, uniform,
+        [&](int i) { return MediumGatherBound(camera, vrls[i], medium); },
+        [&](const auto& b, GatherSample<Real>* samples) {
+          SampleMediumGathers<VrlSampler, StepTwo>(ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1],
+                                                samples);
+        },
+        connect, tally);
+  });
+}
+
+// The medium-to-surface gathers of vrls[0, count) at the point (normal facing the viewer),
+// the VRL points by `method`'s camera sampler, as GatherMediumVrls.
+template <typename Real, typename Uniform, typename Connect>
+void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<Real> point, Vec3<Real> normal,
+                       const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,
+                       Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr) {
+  const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
+  SegmentSamplers::WithEntry(method, [&](auto entry) {
+    using Sampler = typename decltype(entry)::template Sampler<Real>;
+    detail::GatherEachVrl<1>(
+        effort, vrls, weights, count, valid, uniform,
+        [&](int i) { return SurfaceGatherBound(point, normal, vrls[i], medium); },
+        [&](const auto& b, GatherSample<Real>* samples) {
+          SampleSurfaceGathers<Sampler>(ValidQuery{}, point, normal, medium, b.segments, b.count, b.u[0], samples);
+        },
+        connect, tally);
+  });
+}
+
+}  // namespace vrlis

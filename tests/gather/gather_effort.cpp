@@ -1,0 +1,167 @@
+// Hypotheses: the effort control (vrlis/gather/effort.hpp, gather_vrls.hpp) keeps the gather
+// unbiased and its weights finite, and its decisions follow the price.
+// - Roulette (every q < 1) and splitting (every q > 1) give the mean of the gather without
+//   the control, within 4 standard errors; the same runs with the 1 / q weight left out
+//   (a sabotage) are rejected.
+// - q: 1 with the control off or no price; the floor for a price near zero (gathers whose
+//   variance is nothing next to the image's), the ceiling for a huge one; never 0 or NaN.
+// - Every weight handed to the renderer is finite and at most 1 / floor, for prices and
+//   queries at their extremes.
+// - The bounds of effort.hpp are at or above the gather's mean.
+#include <catch2/catch.hpp>
+#include <vrlis/gather/gather_vrls.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+using Real = float;
+
+struct Setup {
+  vrlis::RaySegment<Real> camera{{0, 0, 0}, {0, 0, -1}, Real(0.5), Real(6)};
+  vrlis::Medium<Real> medium{Real(0.3), Real(0.5), Real(0.8)};
+  std::vector<vrlis::VrlSegment<Real>> vrls;
+  std::vector<Real> weights;
+  vrlis::GatherSamplers method{};
+};
+
+Setup MakeSetup() {
+  Setup s;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 12; ++i) {
+    vrlis::Vec3<Real> origin{Real(1 + std::abs(2 * u(rng))) * (i % 2 ? 1 : -1), Real(2 * u(rng)), Real(-1 - 3 * std::abs(u(rng)))};
+    vrlis::Vec3<Real> dir = vrlis::Normalize(vrlis::Vec3<Real>{Real(u(rng)), Real(u(rng)), Real(u(rng))});
+    s.vrls.push_back({origin, dir, Real(0.5 + 2 * std::abs(u(rng)))});
+    s.weights.push_back(Real(std::pow(10.0, 2 * u(rng))));
+  }
+  return s;
+}
+
+struct Moments {
+  double mean = 0, se = 0;
+};
+
+// The gather's sum over the setup's VRLs, `runs` times; with `sabotage` the effort weight is
+// left out.
+Moments Estimate(const Setup& s, const vrlis::EffortSettings& effort, int runs, bool sabotage = false) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<Real> u(0, 1);
+  double sum = 0, sum_sq = 0;
+  for (int r = 0; r < runs; ++r) {
+    double x = 0;
+    vrlis::GatherMediumVrls(s.method, effort, s.camera, s.medium, s.vrls.data(), s.weights.data(),
+                            int(s.vrls.size()), [&] { return u(rng); },
+                            [&](int i, const vrlis::GatherSample<Real>& g, Real w) {
+                              x += double(s.weights[std::size_t(i)]) * g.weight * (sabotage ? 1 : w);
+                            });
+    sum += x;
+    sum_sq += x * x;
+  }
+  double mean = sum / runs;
+  return {mean, std::sqrt((sum_sq / runs - mean * mean) / (runs - 1))};
+}
+
+double Z(const Moments& a, const Moments& b) { return std::abs(a.mean - b.mean) / std::hypot(a.se, b.se); }
+
+// The smallest and largest predicted contribution w x bound over the setup.
+std::pair<double, double> BoundRange(const Setup& s) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (std::size_t i = 0; i < s.vrls.size(); ++i) {
+    double b = s.weights[i] * vrlis::MediumGatherBound(s.camera, s.vrls[i], s.medium);
+    lo = std::min(lo, b), hi = std::max(hi, b);
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+TEST_CASE("roulette and splitting keep the gather unbiased; without 1 / q they do not", "[gather][effort]") {
+  const Setup s = MakeSetup();
+  const Moments off = Estimate(s, {}, 40000);
+  auto [lo, hi] = BoundRange(s);
+  vrlis::EffortSettings roulette{true, vrlis::Sqr(0.8 / hi)};  // every q at most 0.8
+  vrlis::EffortSettings split{true, vrlis::Sqr(1.5 / lo)};     // every q at least 1.5
+  for (const auto& [name, effort, runs] : {std::tuple{"roulette", roulette, 40000}, std::tuple{"splitting", split, 10000}}) {
+    INFO(name);
+    const Moments on = Estimate(s, effort, runs);
+    INFO("off " << off.mean << " +- " << off.se << ", on " << on.mean << " +- " << on.se);
+    CHECK(Z(on, off) < 4);
+    const Moments sabotaged = Estimate(s, effort, runs, true);
+    INFO("sabotaged " << sabotaged.mean << " +- " << sabotaged.se);
+    CHECK(Z(sabotaged, off) > 4);
+  }
+}
+
+TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][effort]") {
+  vrlis::EffortSettings e;
+  CHECK(vrlis::EffortQ(e, 1.0) == 1);  // off
+  e.on = true;
+  CHECK(vrlis::EffortQ(e, 1.0) == 1);  // no price learned yet
+  e.price = std::numeric_limits<double>::quiet_NaN();
+  CHECK(vrlis::EffortQ(e, 1.0) == 1);
+  e.price = 1e-12;  // the image's variance is far above this gather's: the floor
+  CHECK(vrlis::EffortQ(e, 1.0) == e.floor);
+  e.price = 1e12;
+  CHECK(vrlis::EffortQ(e, 1.0) == e.ceiling);
+  e.price = 4;
+  CHECK(vrlis::EffortQ(e, 1.0) == Approx(2));
+  CHECK(vrlis::EffortQ(e, 0.01) == Approx(0.2));
+  CHECK(vrlis::EffortQ(e, 0.0) == e.floor);  // never 0: a bound that rounds to 0 must not drop a gather
+  CHECK(vrlis::EffortQ(e, std::numeric_limits<double>::infinity()) == e.ceiling);
+  CHECK(vrlis::EffortQ(e, std::numeric_limits<double>::quiet_NaN()) == 1);
+  double previous = 0;
+  for (double price = 1e-6; price < 1e6; price *= 3) {
+    e.price = price;
+    double q = vrlis::EffortQ(e, 1.0);
+    CHECK(q >= previous);
+    previous = q;
+  }
+  // Stochastic rounding: q samples on average.
+  int total = 0;
+  for (int k = 0; k < 1000; ++k) total += vrlis::EffortSamples(2.3, (k + 0.5) / 1000);
+  CHECK(total == 2300);
+}
+
+TEST_CASE("effort weights are finite and at most 1 / floor at extreme prices and queries", "[gather][effort]") {
+  Setup s = MakeSetup();
+  s.vrls.push_back({{0, 0, -2}, {1, 0, 0}, Real(1e-5)});                                    // tiny
+  s.vrls.push_back({{-1, 0, -2}, {1, 0, 0}, Real(2)});                                      // crosses the camera line
+  s.vrls.push_back({{Real(0.5), 0, -1}, {0, 0, -1}, Real(3)});                              // parallel to it
+  s.weights.insert(s.weights.end(), {Real(1), Real(1e30), Real(0)});
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<Real> u(0, 1);
+  for (double price : {0.0, 1e-30, 1.0, 1e30, std::numeric_limits<double>::infinity(),
+                       std::numeric_limits<double>::quiet_NaN()}) {
+    vrlis::EffortSettings e{true, price};
+    for (int r = 0; r < 50; ++r)
+      vrlis::GatherMediumVrls(s.method, e, s.camera, s.medium, s.vrls.data(), s.weights.data(), int(s.vrls.size()),
+                              [&] { return u(rng); }, [&](int, const vrlis::GatherSample<Real>& g, Real w) {
+                                REQUIRE(std::isfinite(w));
+                                REQUIRE(w > 0);
+                                REQUIRE(w <= 1 / e.floor * (1 + 1e-6));
+                                REQUIRE(std::isfinite(g.weight));
+                              });
+  }
+}
+
+TEST_CASE("the gather bounds are at or above the gathers' means", "[gather][effort]") {
+  const Setup s = MakeSetup();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<Real> u(0, 1);
+  const vrlis::Vec3<Real> point{0, 0, -6}, normal{0, 0, 1};
+  for (std::size_t i = 0; i < s.vrls.size(); ++i) {
+    double medium = 0, surface = 0;
+    const int n = 4000;
+    for (int k = 0; k < n; ++k) {
+      medium += vrlis::SampleMediumGather(s.method, vrlis::MediumGatherQuery<Real>{s.camera, s.vrls[i], s.medium}, u(rng), u(rng)).weight;
+      surface += vrlis::SampleSurfaceGather(s.method.segment, vrlis::SurfaceGatherQuery<Real>{point, normal, s.vrls[i], s.medium}, u(rng)).weight;
+    }
+    INFO("VRL " << i);
+    CHECK(medium / n <= vrlis::MediumGatherBound(s.camera, s.vrls[i], s.medium));
+    CHECK(surface / n <= vrlis::SurfaceGatherBound(point, normal, s.vrls[i], s.medium));
+  }
+}

@@ -1,0 +1,89 @@
+// The effort control in the renderer (vrlis/gather/effort.hpp, effort_price.hpp):
+// - a pass's decisions are a function of the price learned from the passes before it: pass 3
+//   rendered by a fresh renderer given that price equals the original's pass 3 bit for bit,
+//   at one thread and at four (a price updated within the pass, from the pass's own pixels,
+//   would depend on their order), and differs without it (the control acted);
+// - decisions follow the price: in room, where direct lighting holds almost all the variance
+//   (docs/compare/decomposition.md), the gathers fall towards the floor (by pass 5 under 0.15 of the
+//   uncontrolled count); in the bidirectional scene, which is nothing but gathers, the
+//   gathers taken stay at or above one per VRL;
+// - the controlled image's mean is the uncontrolled one's: per 4 x 4 block of the
+//   bidirectional scene (where roulette and splitting act most), z-scores within a Bonferroni
+//   bound.
+#include <tbb/global_control.h>
+
+#include <catch2/catch.hpp>
+#include <cstring>
+#include <cmath>
+
+#include <vrlis_scenes/scenes.hpp>
+
+#include "block_stats.hpp"
+
+namespace {
+
+vrlis::integration::RenderSettings Settings(const vrlis::scenes::BuiltScene& built, int size, bool effort) {
+  vrlis::integration::RenderSettings s;
+  s.width = s.height = size;
+  s.vrls_per_pass = 32;
+  s.transport = built.transport;
+  s.transport.effort.on = effort;
+  return s;
+}
+
+bool Same(const vrlis::integration::Film& a, const vrlis::integration::Film& b) {
+  return a.pixels.size() == b.pixels.size() &&
+         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(vrlis::integration::Spectrum)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("a pass's effort decisions come from the passes before it", "[render][effort]") {
+  auto built = vrlis::scenes::BuildScene("room", {});
+  REQUIRE(built);
+  const vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+  vrlis::integration::VrlRenderer a(built->scene, s);
+  for (std::uint64_t pass = 0; pass < 3; ++pass) a.RenderPass(1, pass, nullptr);
+  const vrlis::integration::EffortPrice learned = a.effort_price();
+  REQUIRE(learned.passes() == 3);
+  REQUIRE(learned.price(vrlis::integration::GatherKind::Medium) > 0);
+  REQUIRE(learned.price(vrlis::integration::GatherKind::Surface) > 0);
+  const vrlis::integration::Film original = a.RenderPass(1, 3, nullptr);
+  for (int threads : {1, 4}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    vrlis::integration::VrlRenderer b(built->scene, s);
+    b.set_effort_price(learned);
+    CHECK(Same(b.RenderPass(1, 3, nullptr), original));
+  }
+  vrlis::integration::VrlRenderer fresh(built->scene, s);
+  CHECK_FALSE(Same(fresh.RenderPass(1, 3, nullptr), original));
+}
+
+TEST_CASE("effort: gathers without variance fall to the floor, a scene of gathers keeps them", "[render][effort]") {
+  auto gathers = [](const char* scene, int pass) {
+    auto built = vrlis::scenes::BuildScene(scene, {});
+    REQUIRE(built);
+    vrlis::integration::VrlRenderer r(built->scene, Settings(*built, 16, true));
+    vrlis::integration::PassStats first, stats;
+    r.RenderPass(1, 0, &first);
+    for (int p = 1; p <= pass; ++p) r.RenderPass(1, std::uint64_t(p), &stats);
+    return double(stats.gathers) / double(first.gathers);  // pass 0 takes every gather once
+  };
+  const double room = gathers("room", 5), bidirectional = gathers("bidirectional", 5);
+  INFO("gathers in pass 5 over pass 0: room " << room << ", bidirectional " << bidirectional);
+  CHECK(room < 0.15);
+  CHECK(bidirectional >= 1);
+}
+
+TEST_CASE("effort keeps the image's mean", "[render][effort]") {
+  auto built = vrlis::scenes::BuildScene("bidirectional", {});
+  REQUIRE(built);
+  const int size = 16, block = 4, passes = 24;
+  vrlis::integration::VrlRenderer off(built->scene, Settings(*built, size, false)), on(built->scene, Settings(*built, size, true));
+  render_test::BlockEstimate a = render_test::EstimateBlocks(off, size, size, block, passes, 1);
+  render_test::BlockEstimate b = render_test::EstimateBlocks(on, size, size, block, passes, 2);
+  const render_test::ZSummary z = render_test::Compare(a, b);
+  INFO(z.Describe());
+  CHECK(z.Pass());
+  CHECK(z.n == 16);
+}
