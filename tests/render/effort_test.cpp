@@ -80,9 +80,9 @@ TEST_CASE("effort keeps the image's mean", "[render][effort]") {
   REQUIRE(built);
   const int size = 16, block = 4, passes = 24;
   vrlis::integration::VrlRenderer off(built->scene, Settings(*built, size, false)), on(built->scene, Settings(*built, size, true));
-  render_test::BlockEstimate a = render_test::EstimateBlocks(off, size, size, block, passes, 1);
-  render_test::BlockEstimate b = render_test::EstimateBlocks(on, size, size, block, passes, 2);
-  const render_test::ZSummary z = render_test::Compare(a, b);
+  vrlis::test::BlockEstimate a = vrlis::test::EstimateBlocks(off, size, size, block, passes, 1);
+  vrlis::test::BlockEstimate b = vrlis::test::EstimateBlocks(on, size, size, block, passes, 2);
+  const vrlis::test::ZSummary z = vrlis::test::Compare(a, b);
   INFO(z.Describe());
   CHECK(z.Pass());
   CHECK(z.n == 16);
