@@ -16,7 +16,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from samplers import own, policies  # noqa: E402
+from samplers import baseline, own, policies  # noqa: E402
 
 SCENES = ["bidirectional", "room", "cube", "corner"]
 
@@ -147,7 +147,7 @@ def main():
 
     L.append("## The queries\n")
     L.append("| scene | g | gathers rendered | queries kept | effective queries | sigma_t | hard class: queries "
-             "| hard: weight | hard: second moment (novak) | largest 8: weight | largest query: share, sigma_t h, "
+             f"| hard: weight | hard: second moment ({baseline()}) | largest 8: weight | largest query: share, sigma_t h, "
              "mfp beyond, camera / VRL length (mfp) |")
     L.append("|---" * 11 + "|")
     for scene, g, acc, render in runs:
@@ -158,7 +158,7 @@ def main():
                     f"{fmt(top['camera_mfp'], 2)} / {fmt(top['vrl_mfp'], 2)}") if top else "-"
         L.append(f"| {scene} | {g:g} | {render['gathers']} | {acc['records']} | {acc['effective_queries']:.1f} | "
                  f"{', '.join(fmt(s) for s in sigma)} | {100 * hc['fraction']:.1f}% | "
-                 f"{100 * hc['weight_fraction']:.1f}% | {100 * hc['second_moment_fraction']['novak']:.1f}% | "
+                 f"{100 * hc['weight_fraction']:.1f}% | {100 * hc['second_moment_fraction'][baseline()]:.1f}% | "
                  f"{100 * acc['largest_share']:.0f}% | {top_text} |")
     L.append("")
 

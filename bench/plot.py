@@ -24,7 +24,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from samplers import label, own, policies, style  # noqa: E402
+from samplers import baseline, label, own, policies, style, thesis  # noqa: E402
 
 STEPS = [("camera", "Camera", "camera step (fixed VRL point)"),
          ("whole", "Estimator", "whole estimator (VRL point + camera point)"),
@@ -138,37 +138,42 @@ def main():
     L.append("- Efficiency: `1 / (mean relative variance x time per sample)`, in 1/s; "
              "the margin is the winner's efficiency over the runner-up's.\n")
 
-    # Speed.
-    L.append("## Time per sample (ns) and ratios to Novák\n")
-    L.append("| g | " + " | ".join(samplers) + " | **CauchySum / Novak** | **CauchyMixture / Novak** | FullProduct / Novak | "
-             + " | ".join(f"estimator: {s}" for s in samplers) + " | CSum / Novak | CMix / Novak |")
-    L.append("|---" * (2 * len(samplers) + 6) + "|")
-    ratios = {k: [] for k in ["cs", "cm", "fp", "ecs", "ecm"]}
-    idx = {s: i for i, s in enumerate(samplers)}
+    # Speed: the thesis's samplers and ours against the baseline (Novák's), all from the registry.
+    base = label(baseline())
+    claimed = [label(n) for n in thesis()]
+    ours = [label(n) for n in tabled if n in own()]
+    L.append(f"## Time per sample (ns) and ratios to {base}\n")
+    L.append("| g | " + " | ".join(samplers) + " | " + " | ".join(f"**{c} / {base}**" for c in claimed) + " | "
+             + " | ".join(f"{c} / {base}" for c in ours) + " | " + " | ".join(f"estimator: {s}" for s in samplers)
+             + " | " + " | ".join(f"estimator {c} / {base}" for c in claimed) + " |")
+    L.append("|---" * (2 * len(samplers) + 2 * len(claimed) + len(ours) + 1) + "|")
+    camera_ratio = {c: [] for c in claimed + ours}
+    estimator_ratio = {c: [] for c in claimed}
     for g in gs:
-        c = [time("Camera", s, g) for s in samplers]
-        e = [time("Estimator", s, g) for s in samplers]
-        nv = idx["Novak"]
-        r = [c[idx["CauchySum"]] / c[nv], c[idx["CauchyMixture"]] / c[nv], c[idx["FullProduct"]] / c[nv],
-             e[idx["CauchySum"]] / e[nv], e[idx["CauchyMixture"]] / e[nv]]
-        for k, v in zip(ratios, r):
-            ratios[k].append(v)
-        L.append(f"| {g:g} | " + " | ".join(fmt(x) for x in c) + f" | **{r[0]:.2f}** | **{r[1]:.2f}** | {r[2]:.2f} | "
-                 + " | ".join(fmt(x) for x in e) + f" | {r[3]:.2f} | {r[4]:.2f} |")
+        c = {s: time("Camera", s, g) for s in samplers}
+        e = {s: time("Estimator", s, g) for s in samplers}
+        for k in camera_ratio:
+            camera_ratio[k].append(c[k] / c[base])
+        for k in estimator_ratio:
+            estimator_ratio[k].append(e[k] / e[base])
+        L.append(f"| {g:g} | " + " | ".join(fmt(c[s]) for s in samplers) + " | "
+                 + " | ".join(f"**{camera_ratio[k][-1]:.2f}**" for k in claimed) + " | "
+                 + " | ".join(f"{camera_ratio[k][-1]:.2f}" for k in ours) + " | "
+                 + " | ".join(fmt(e[s]) for s in samplers) + " | "
+                 + " | ".join(f"{estimator_ratio[k][-1]:.2f}" for k in claimed) + " |")
     vp = times.get("VrlPoint")
     L.append("")
-    L.append(f"Geometric mean over g of the camera-step ratio: CauchySum / Novak = **{geomean(ratios['cs']):.2f}**, "
-             f"CauchyMixture / Novak = **{geomean(ratios['cm']):.2f}** (goal: below 0.35; "
-             f"range over g {min(ratios['cs']):.2f}-{max(ratios['cs']):.2f} and {min(ratios['cm']):.2f}-{max(ratios['cm']):.2f}), "
-             f"FullProduct / Novak = {geomean(ratios['fp']):.2f}. "
-             f"Whole estimator step: {geomean(ratios['ecs']):.2f} and {geomean(ratios['ecm']):.2f}."
+    L.append("Geometric mean over g of the camera-step ratio: "
+             + ", ".join(f"{k} / {base} = **{geomean(v):.2f}** (range over g {min(v):.2f}-{max(v):.2f})"
+                         for k, v in camera_ratio.items() if k in claimed)
+             + "; " + ", ".join(f"{k} / {base} = {geomean(camera_ratio[k]):.2f}" for k in ours)
+             + ". Whole estimator step: " + ", ".join(f"{k} {geomean(v):.2f}" for k, v in estimator_ratio.items()) + "."
              + (f" VrlPoint alone: {vp:.0f} ns." if vp else ""))
+
     def where(rs, bound):
         return "{" + (", ".join(f"{g:g}" for g, x in zip(gs, rs) if x < bound) or "none") + "}"
-    L.append(f"The thesis's claim (Cauchy faster per sample than Novák) holds for CauchySum at g in "
-             f"{where(ratios['cs'], 1)} and for CauchyMixture at g in {where(ratios['cm'], 1)}; the 0.35 goal "
-             f"is met by CauchySum at g in {where(ratios['cs'], 0.35)} and by CauchyMixture at g in "
-             f"{where(ratios['cm'], 0.35)}.")
+    L.append(f"The thesis's claim (a sample costs less than {base}'s) holds for "
+             + " and ".join(f"{k} at g in {where(camera_ratio[k], 1)}" for k in claimed) + ".")
     fits = [(s, [times.get(f"Fit/{s}/{gkey(g)}") for g in gs]) for s in samplers]
     if all(all(t for t in ts) for _, ts in fits):
         L.append("Of the camera-step time, the fit alone takes (geometric mean over g): "

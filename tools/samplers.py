@@ -23,7 +23,8 @@ _ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 @functools.lru_cache(maxsize=None)
 def registry(build=None):
-    """{"segment": [entry...], "vrl": [entry...]}, each entry {name, label, own, policy, round_trip}."""
+    """{"segment": [entry...], "vrl": [entry...]}, each entry {name, label, own, policy, round_trip, thesis,
+    baseline}."""
     build = build or os.environ.get("VRLIS_BUILD", os.path.join(_ROOT, "build"))
     listing = subprocess.run([os.path.join(build, "examples", "vrl_render"), "--list-samplers"], check=True,
                              capture_output=True, text=True).stdout
@@ -43,6 +44,19 @@ def policies():
     """Samplers that choose among the others per query: judged by the equal-time study, left
     out of the per-sample speed and accuracy tables."""
     return {e["name"] for e in registry()["segment"] if e["policy"]}
+
+
+def thesis():
+    """The thesis's samplers, in registry order: the ones its claims are tested on."""
+    return [e["name"] for e in registry()["segment"] if e.get("thesis")]  # (listings before the property: none)
+
+
+def baseline():
+    """The sampler every efficiency ratio is to."""
+    found = [e["name"] for e in registry()["segment"] if e.get("baseline")]
+    if not found:
+        sys.exit("tools/samplers.py: the registry's listing marks no baseline (a build older than the property?)")
+    return found[0]
 
 
 def label(name):

@@ -10,7 +10,7 @@
 # - vrl_render VRL gathers per second, per scene x sampler x commit, on 1 and 2 threads, and
 #   the 2-thread speedup;
 # - vrlis_bench's camera step per sample (fit + sample + pdf), per sampler x g x commit, and
-#   the ratios CauchySum / Novak and CauchyMixture / Novak;
+#   the ratios of the thesis's samplers to the baseline (Novák's), both from the registry;
 # - step one per sample (VrlPoint, VrlMarginal) in both commits;
 # - NEW's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries)
 #   and the cost of one gather.
@@ -60,6 +60,12 @@ build_commit "$base_ref" "$base"
 build_commit "$new_ref" "$new"
 # The samplers: NEW's registry (vrl_render --list-samplers), policies left out.
 samplers=${VRLIS_SPEED_SAMPLERS:-$(/usr/bin/python3 tools/samplers.py "$new" --per-sample | tr '\n' ' ')}
+baseline=$(VRLIS_BUILD="$new" /usr/bin/python3 -c 'import sys; sys.path.insert(0, "tools"); import samplers; print(samplers.baseline())')
+# Profiled: the baseline where the medium-to-medium gathers are all (bidirectional), and the
+# registry's first sampler (equiangular, the cost floor) where Embree and medium-to-surface
+# gathers take most of the time (cube).
+set -- $samplers
+profiled="bidirectional:$baseline cube:$1"
 
 echo "== vrl_render: $reps rounds, builds interleaved (${size}x${size}, $spp passes)"
 for rep in $(seq "$reps"); do
@@ -88,8 +94,8 @@ echo "== vrlis_bench Gather/*, SurfaceGatherBatch/*, GatherPart/*, Fit/*, Camera
   --benchmark_out="$out/runs/parts.json" --benchmark_out_format=json >/dev/null
 if command -v perf >/dev/null; then
   # bidirectional: medium-to-medium gathers only; cube: mostly medium-to-surface ones, and Embree.
-  for run in "bidirectional novak" "cube equiangular"; do
-    set -- $run
+  for run in $profiled; do
+    set -- ${run/:/ }
     echo "== perf profile of vrl_render ($1, $2, 1 thread)"
     perf record -q -o "$out/runs/perf_$1.data" "$new/examples/vrl_render" --scene "$1" --sampler "$2" --threads 1 \
       --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf_$1" >/dev/null 2>&1 || true
@@ -102,7 +108,7 @@ fi
 
 echo "== vrlis_bench SceneCamera/*: the camera step on each scene's own queries (this tree)"
 for scene in $scenes; do
-  "$new/examples/vrl_render" --scene "$scene" --sampler novak --threads 1 --width "$size" --height "$size" --spp "$spp" \
+  "$new/examples/vrl_render" --scene "$scene" --sampler "$baseline" --threads 1 --width "$size" --height "$size" --spp "$spp" \
     --quiet --dump-queries "$out/runs/$scene.qlog" --dump-every 20 --out "$out/runs/${scene}_queries" >/dev/null
   "${pin[@]}" "$new/bench/vrlis_bench" --vrlis_queries="$out/runs/$scene.qlog" --benchmark_filter='^SceneCamera/' \
     --benchmark_min_time=0.1 --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
@@ -118,9 +124,10 @@ for rep in $(seq "$reps"); do
   done
 done
 
-VRLIS_BUILD="$new" /usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" <<'EOF' | tee "$out/speed.md"
+VRLIS_BUILD="$new" /usr/bin/python3 - "$out" "$reps" "$scenes" "$samplers" "$profiled" <<'EOF' | tee "$out/speed.md"
 import json, math, os, statistics, sys
 out, reps, scenes, samplers = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(), sys.argv[4].split()
+profiled = [run.split(":") for run in sys.argv[5].split()]
 missing = set()  # what one of the commits has no benchmark or sampler for
 def median(b):  # the median of the repetitions; with one repetition, Google Benchmark writes the run alone
     return b.get("aggregate_name") == "median" or (reps == 1 and b.get("run_type") != "aggregate")
@@ -146,7 +153,7 @@ for scene in scenes:
 # Older commits name their benchmarks by class (Camera/CauchySum), newer ones by registry name
 # (Camera/cauchy-sum): both are read under the registry name's label (tools/samplers.py).
 sys.path.insert(0, "tools")
-from samplers import label
+from samplers import baseline, label, thesis
 def by_class(name):
     kind, sampler, rest = name.split("/", 2)
     return f"{kind}/{label(sampler) if sampler in samplers else sampler}/{rest}"
@@ -163,6 +170,8 @@ for build in ("base", "new"):
 names = sorted({n for _, n in times if ":" in n}, key=lambda n: (n.split("/")[1], float(n.split(":")[1])))
 gs = sorted({float(n.split(":")[1]) for n in names})
 cams = [label(s) for s in samplers]
+base_cam, base_name = label(baseline()), baseline()  # every ratio is to the baseline (Novák's) ...
+claimed = [label(s) for s in thesis()]  # ... and the thesis's samplers are the ones its claims are about
 class Missing(float):
     """A time one commit has no benchmark for: printed as n/a, and listed below the tables."""
     def __new__(cls, what):
@@ -172,12 +181,13 @@ class Missing(float):
 def get(build, name): return times.get((build, name)) or Missing(f"{name} ({build})")
 def t(build, cam, g): return get(build, f"Camera/{cam}/g:{g:.2f}")
 print(f"\nCamera step per sample, ns (fit + sample + pdf, float, as each commit's Camera/ benchmark times it; median of {reps} interleaved runs)\n")
-print("| g | " + " | ".join(f"{c} base | {c} new" for c in cams) + " | CSum/Novak base | CSum/Novak new | CMix/Novak base | CMix/Novak new |")
-print("|---|" + "---|" * (2 * len(cams) + 4))
+print("| g | " + " | ".join(f"{c} base | {c} new" for c in cams) + " | "
+      + " | ".join(f"{c}/{base_cam} {b}" for c in claimed for b in ("base", "new")) + " |")
+print("|---|" + "---|" * (2 * len(cams) + 2 * len(claimed)))
 def geo(xs): return math.exp(sum(map(math.log, xs)) / len(xs))
 for g in gs:
     row = [f"{t(b, c, g):.0f}" for c in cams for b in ("base", "new")]
-    ratios = [t(b, c, g) / t(b, "Novak", g) for c in ("CauchySum", "CauchyMixture") for b in ("base", "new")]
+    ratios = [t(b, c, g) / t(b, base_cam, g) for c in claimed for b in ("base", "new")]
     print(f"| {g:g} | " + " | ".join(row) + " | " + " | ".join(f"{r:.2f}" for r in ratios) + " |")
 # Step one alone on the line queries (VrlPointFromLine: VrlPoint without validating a whole
 # gather query).
@@ -199,15 +209,15 @@ print("|---|" + "---|" * len(cams))
 for g in gs:
     print(f"| {g:g} | " + " | ".join(f"{t('new', c, g) / get('new', f'CameraSeparate/{c}/g:{g:.2f}'):.2f}" for c in cams) + " |")
 print(f"\nCamera step per sample on the scenes' own queries, ns (fit + sample_pdf, float; vrlis_bench SceneCamera/ over "
-      f"a log of the scene's medium-to-medium gathers, vrl_render --dump-queries; median of {reps} repetitions), and over Novak\n")
+      f"a log of the scene's medium-to-medium gathers, vrl_render --dump-queries; median of {reps} repetitions), and over {base_cam}\n")
 scene_methods = samplers
-print("| scene | " + " | ".join(scene_methods) + " | CSum/Novak | CMix/Novak |")
-print("|---|" + "---|" * (len(scene_methods) + 2))
+print("| scene | " + " | ".join(scene_methods) + " | " + " | ".join(f"{c}/{base_cam}" for c in claimed) + " |")
+print("|---|" + "---|" * (len(scene_methods) + len(claimed)))
 for scene in scenes:
     st = {b["name"].split("/")[1].rsplit("_", 1)[0]: b["cpu_time"] for b in json.load(open(f"{out}/runs/scene_{scene}.json"))["benchmarks"]
           if median(b)}
     print(f"| {scene} | " + " | ".join(f"{st[m]:.0f}" for m in scene_methods) +
-          f" | {st['cauchy-sum'] / st['novak']:.2f} | {st['cauchy-mixture'] / st['novak']:.2f} |")
+          " | " + " | ".join(f"{st[c] / st[base_name]:.2f}" for c in thesis()) + " |")
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json") if median(b)}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
       "one VRL at a time; batched gather: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
@@ -224,10 +234,10 @@ for c, m in zip(cams, samplers):
         print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} | {surface:.0f} |")
 # This table is one run of this tree, not interleaved with the baseline: a slow phase of a
 # shared machine inflates all of it. The same benchmark in both runs shows by how much.
-here, rounds = parts["Camera/Novak/g:0.50"], t("new", "Novak", 0.5)
-print(f"\nMachine phase: Camera/novak at g = 0.5 took {here:.0f} ns in this table's run and {rounds:.0f} ns in the "
+here, rounds = parts[f"Camera/{base_cam}/g:0.50"], t("new", base_cam, 0.5)
+print(f"\nMachine phase: Camera/{base_name} at g = 0.5 took {here:.0f} ns in this table's run and {rounds:.0f} ns in the "
       f"interleaved rounds above ({here / rounds:.2f}x); this table's absolute times carry that factor.")
-for scene, sampler in (("bidirectional", "novak"), ("cube", "equiangular")):
+for scene, sampler in profiled:
     try:
         prof = open(f"{out}/runs/perf_{scene}.txt").read().rstrip()
     except OSError:
@@ -238,9 +248,9 @@ for scene, sampler in (("bidirectional", "novak"), ("cube", "equiangular")):
 if missing:
     print("\nNot compared (one commit has no such benchmark or sampler): " + ", ".join(sorted(missing)))
 print("\nGeometric mean over g: " + ", ".join(f"{c} new / base {geo([t('new', c, g) / t('base', c, g) for g in gs]):.2f}" for c in cams))
-for c in ("CauchySum", "CauchyMixture"):
-    print(f"{c} / Novak: base {geo([t('base', c, g) / t('base', 'Novak', g) for g in gs]):.2f}, "
-          f"new {geo([t('new', c, g) / t('new', 'Novak', g) for g in gs]):.2f}")
+for c in claimed:
+    print(f"{c} / {base_cam}: base {geo([t('base', c, g) / t('base', base_cam, g) for g in gs]):.2f}, "
+          f"new {geo([t('new', c, g) / t('new', base_cam, g) for g in gs]):.2f}")
 EOF
 
 # The generated section of docs/bench.md (tools/bench.sh keeps it when it rewrites the rest),

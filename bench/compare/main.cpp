@@ -61,7 +61,7 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
   float exposure = vrlis::scenes::AutoExposure(reference);
   for (const auto& s : r.samplers) {
     samplers.push_back({{"sampler", SamplerName(s.sampler)}, {"passes", s.passes}, {"seconds_per_pass", s.seconds},
-                        {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_novak", ToJson(s.to_baseline)},
+                        {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_baseline", ToJson(s.to_baseline)},
                         {"error_to_noise", s.error_to_noise}, {"verdict", s.verdict},
                         {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}},
                         {"progression", Progressions(s.progression)}});
@@ -71,7 +71,8 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
   }
   nlohmann::json mixture = nlohmann::json::array();
   for (auto s : c.samplers) mixture.push_back(SamplerName(s));
-  nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"vrl_only", c.vrl_only}, {"margin", c.margin}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
+  nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"vrl_only", c.vrl_only}, {"margin", c.margin},
+                      {"baseline", SamplerName(vrlis::compare::kBaseline)}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
                       {"budget", c.budget}, {"replicates", c.replicates}, {"seed", c.seed},
                       {"passes_per_replicate", r.passes_per_replicate}, {"verdict", r.verdict},
                       {"top_vs_runner_up", ToJson(r.top_vs_runner_up)}, {"resolution", r.resolution},
@@ -92,8 +93,8 @@ std::string Interval(const vrlis::compare::RatioInterval& r) {
 // One row per study and sampler.
 std::string SummaryTable(const std::vector<StudyResult>& results) {
   std::ostringstream t;
-  t << "| scene | g | sampler | passes | ms / pass | variance / pass | efficiency / Novak (95% interval) "
-       "| error² / noise² | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
+  t << "| scene | g | sampler | passes | ms / pass | variance / pass | efficiency / "
+    << vrlis::compare::kBaseline.segment.name() << " (95% interval) | error² / noise² | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : results)
     for (const auto& s : r.samplers) {
       char line[384];
@@ -151,7 +152,7 @@ int main(int argc, char** argv) {
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
-  app.add_option("--samplers", sampler_names, "Camera samplers, novak among them (default: all)")->delimiter(',');
+  app.add_option("--samplers", sampler_names, "Camera samplers, the baseline " + SamplerName(vrlis::compare::kBaseline) + " among them (default: all)")->delimiter(',');
   app.add_option("--budget", base.budget, "Seconds of passes per sampler and study, at least")->capture_default_str();
   app.add_option("--replicates", base.replicates, "Independent replicates per study (>= 3)")->capture_default_str();
   app.add_option("--margin", base.margin, "\"best\" needs the 95% interval over the runner-up above this (>= 1)")
@@ -212,7 +213,7 @@ int main(int argc, char** argv) {
   }
   if (std::find(base.samplers.begin(), base.samplers.end(), vrlis::compare::kBaseline) == base.samplers.end() ||
       base.samplers.size() < 2)
-    return Fail("--samplers must name novak (every ratio is to it) and at least one other");
+    return Fail("--samplers must name " + SamplerName(vrlis::compare::kBaseline) + " (every ratio is to it) and at least one other");
   if (std::set<float>(gs.begin(), gs.end()).size() != gs.size() ||
       std::set<std::string>(scenes.begin(), scenes.end()).size() != scenes.size())
     return Fail("--scenes and --g must not repeat a value");

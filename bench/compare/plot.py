@@ -31,7 +31,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker as ticker  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from samplers import style  # noqa: E402
+from samplers import label, style  # noqa: E402
 import thesis  # noqa: E402
 
 PART_COLOURS = {
@@ -88,7 +88,7 @@ def plot_efficiency(results, folder):
             xs, ys, lo, hi = [], [], [], []
             for i, r in enumerate(studies):
                 s = next(s for s in r["samplers"] if s["sampler"] == name)
-                ratio = s["to_novak"]
+                ratio = s["to_baseline"]
                 xs.append(i + (k - (len(samplers) - 1) / 2) * 0.13)
                 ys.append(ratio["point"])
                 lo.append(ratio["point"] - ratio["low"])
@@ -103,7 +103,7 @@ def plot_efficiency(results, folder):
         ax.tick_params(axis="y", which="minor", labelsize=7)
         ax.set_xticks(range(len(gs)))
         ax.set_xticklabels([f"g = {g:g}" for g in gs], fontsize=8)
-        ax.set_ylabel("efficiency / Novak's (95% interval)")
+        ax.set_ylabel(f"efficiency / {label(studies[0]['baseline'])}'s (95% interval)")
         ax.set_title(scene)
         ax.grid(True, which="both", axis="y", alpha=0.3)
     axes[0][0].legend(fontsize=7)
@@ -114,7 +114,7 @@ def plot_strip(study_dir, result, name):
     samplers = result["samplers"]
     fig, axes = plt.subplots(1, len(samplers) + 1, figsize=(2 * (len(samplers) + 1), 2.5))
     panels = [("reference (mixture)", "reference.png", f"{result['reference']['passes']} passes")]
-    panels += [(s["sampler"], s["sampler"] + ".png", f"x{s['to_novak']['point']:.2f} Novak") for s in samplers]
+    panels += [(s["sampler"], s["sampler"] + ".png", f"x{s['to_baseline']['point']:.2f} {label(result['baseline'])}") for s in samplers]
     for ax, (title, image, caption) in zip(axes, panels):
         ax.imshow(mpimg.imread(os.path.join(study_dir, image)), interpolation="nearest")
         ax.set_title(title, fontsize=8)

@@ -22,7 +22,8 @@ inline std::vector<GatherSamplers> AllSamplers() {
   for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) all.push_back({m, {}});
   return all;
 }
-inline const GatherSamplers kBaseline = *vrlis::ParseGatherSamplers("novak");  // every ratio is to Novák's sampler
+// Every ratio is to the registry's baseline (Novák's sampler) with Novák's step one.
+inline const GatherSamplers kBaseline{*vrlis::SegmentSamplers::Baseline(), vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>()};
 
 // One VRL renderer of a scene; Render times a pass with the given camera sampler.
 class PassRenderer {

@@ -10,8 +10,7 @@ import os
 
 import matplotlib.pyplot as plt
 
-CLAIMED = ("cauchy-sum", "cauchy-mixture")
-BASELINE = "novak"
+import samplers  # tools/samplers.py: the registry's table (bench/compare/plot.py puts it on the path)
 # Student's t, 97.5% quantile, by degrees of freedom (the replicates less one).
 T975 = {2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228, 11: 2.201,
         12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131, 19: 2.093, 24: 2.064, 29: 2.045}
@@ -34,7 +33,8 @@ def sampler(result, name):
 def thesis_words(g):
     if g >= 0.9:
         return "Novák better (g = 0.9)"
-    return "both Cauchy samplers better"
+    # At g = 0 both Cauchy samplers are equiangular sampling: their lead there is cost alone.
+    return "both Cauchy samplers better" + (" (here both are equiangular sampling)" if g == 0 else "")
 
 
 def judge(interval, g, margin):
@@ -53,7 +53,7 @@ def judge(interval, g, margin):
 def time_ratio(result, name):
     """Seconds per pass of `name` over Novák's, the geometric mean of the per-replicate ratios
     (the replicates are paired: the same light paths and pixels), with a 95% t interval."""
-    a, b = sampler(result, name)["replicates"]["seconds"], sampler(result, BASELINE)["replicates"]["seconds"]
+    a, b = sampler(result, name)["replicates"]["seconds"], sampler(result, result["baseline"])["replicates"]["seconds"]
     logs = [math.log(x / y) for x, y in zip(a, b)]
     n = len(logs)
     mean = sum(logs) / n
@@ -68,14 +68,15 @@ def speed_verdict(ratio):
 
 
 def claims_page(results, provenance_line, margin):
+    claimed, base = samplers.thesis(), samplers.label(results[0]["baseline"])
     rows, counts = [], {}
     for r in results:
-        if sampler(r, BASELINE) is None or any(sampler(r, n) is None for n in CLAIMED):
+        if any(sampler(r, n) is None for n in claimed):
             continue
         cells = [r["scene"], f"{g_of(r):g}", thesis_words(g_of(r))]
-        for name in CLAIMED:
+        for name in claimed:
             s = sampler(r, name)
-            ratio = s["to_novak"]
+            ratio = s["to_baseline"]
             verdict = judge(ratio, g_of(r), margin)
             counts[(name, verdict)] = counts.get((name, verdict), 0) + 1
             speed = time_ratio(r, name)
@@ -117,13 +118,14 @@ def claims_page(results, provenance_line, margin):
         "smaller than ours. Ours also has none of that implementation's bias for sloped pieces "
         "([../maths.md](../maths.md#novak)).",
         "",
-        "| scene | g | the thesis says | CauchySum / Novák (95%) | verdict | CauchySum pass time / Novák's "
-        "| CauchyMixture / Novák (95%) | verdict | CauchyMixture pass time / Novák's |",
-        "|---|---|---|---|---|---|---|---|---|",
+        "| scene | g | the thesis says | " + " | ".join(
+            f"{samplers.label(n)} / {base} (95%) | verdict | {samplers.label(n)} pass time / {base}'s" for n in claimed)
+        + " |",
+        "|---|---|---|" + "---|---|---|" * len(claimed),
         *rows,
         "",
-        f"In {n} cells: CauchySum {tally('cauchy-sum')}; CauchyMixture {tally('cauchy-mixture')}. "
-        f"Faster per pass: CauchySum {tally('cauchy-sum speed')}; CauchyMixture {tally('cauchy-mixture speed')}.",
+        f"In {n} cells: " + "; ".join(f"{samplers.label(c)} {tally(c)}" for c in claimed) + ". Faster per pass: "
+        + "; ".join(f"{samplers.label(c)} {tally(c + ' speed')}" for c in claimed) + ".",
         "",
     ]
     return "\n".join(lines), summary_sentence(results, margin)
@@ -132,12 +134,13 @@ def claims_page(results, provenance_line, margin):
 def summary_sentence(results, margin):
     """Where the claims hold, in one sentence (the README's, written by the generator)."""
     parts = []
-    for name, label in zip(CLAIMED, ("CauchySum", "CauchyMixture")):
+    for name in samplers.thesis():
+        label = samplers.label(name)
         held = {"holds": [], "does not hold": [], "undecided": []}
         for r in results:
             s = sampler(r, name)
-            if s is not None and sampler(r, BASELINE) is not None:
-                held[judge(s["to_novak"], g_of(r), margin)].append(f"{r['scene']} {g_of(r):g}")
+            if s is not None:
+                held[judge(s["to_baseline"], g_of(r), margin)].append(f"{r['scene']} {g_of(r):g}")
         cells = sum(len(v) for v in held.values())
         parts.append(f"{label} in {len(held['holds'])} of {cells} cells"
                      + (f" ({', '.join(held['holds'])})" if 0 < len(held["holds"]) <= 6 else "")

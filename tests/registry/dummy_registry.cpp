@@ -9,7 +9,7 @@ namespace {
 
 struct DummyEntry {
   static constexpr std::string_view kName = "dummy-sampler";
-  static constexpr bool kOwn = true, kRoundTripInDistribution = true;
+  static constexpr bool kOwn = true, kRoundTripInDistribution = true, kThesis = true;
   template <typename Real>
   using Sampler = vrlis::Equiangular<Real>;
 };

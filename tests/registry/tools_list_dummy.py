@@ -29,6 +29,10 @@ with tempfile.TemporaryDirectory() as build:
         failures.append("listed as a policy")
     if samplers.style("dummy-sampler") == ("black", "x"):
         failures.append("no chart style of its own")
+    if "dummy-sampler" not in samplers.thesis():
+        failures.append("not among the thesis's samplers (bench/compare/thesis.py, bench/plot.py, tools/speed.sh)")
+    if samplers.baseline() == "dummy-sampler":
+        failures.append("taken for the baseline")
     entry = next((e for e in samplers.registry()["segment"] if e["name"] == "dummy-sampler"), {})
     if entry.get("round_trip") != "distribution":
         failures.append(f"round trip: {entry.get('round_trip')}")

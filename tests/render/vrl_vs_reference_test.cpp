@@ -53,16 +53,20 @@ void Run(const Case& c) {
   CHECK_FALSE(zc.Pass());
 }
 
+// Each scene checks another sampler, in registry order after the first (the cost floor, which
+// the other tests cover most), so that one run puts several samplers against the reference.
+vrlis::SegmentChoice NthSampler(std::size_t k) { return vrlis::kSegmentSamplers[k % vrlis::kSegmentSamplers.size()]; }
+
 }  // namespace
 
 TEST_CASE("room: VRL image matches the path tracer", "[render][reference]") {
-  Run({"room", vrlis::SegmentSamplers::Of<vrlis::NovakEntry>(), 32, 16, 480, 4, 2048, 1.25});
+  Run({"room", NthSampler(1), 32, 16, 480, 4, 2048, 1.25});
 }
 
 TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
-  Run({"cube", vrlis::SegmentSamplers::Of<vrlis::CauchySumEntry>(), 32, 8, 48, 32, 256, 1.1});
+  Run({"cube", NthSampler(2), 32, 8, 48, 32, 256, 1.1});
 }
 
 TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
-  Run({"corner", vrlis::SegmentSamplers::Of<vrlis::CauchyMixtureEntry>(), 16, 16, 200, 64, 4096, 1.5});
+  Run({"corner", NthSampler(3), 16, 16, 200, 64, 4096, 1.5});
 }
