@@ -142,9 +142,10 @@ def summary_sentence(results, margin):
             if s is not None:
                 held[judge(s["to_baseline"], g_of(r), margin)].append(f"{r['scene']} {g_of(r):g}")
         cells = sum(len(v) for v in held.values())
-        parts.append(f"{label} in {len(held['holds'])} of {cells} cells"
-                     + (f" ({', '.join(held['holds'])})" if 0 < len(held["holds"]) <= 6 else "")
-                     + f", not in {len(held['does not hold'])}, undecided in {len(held['undecided'])}")
+        def listed(cells_):
+            return f" ({', '.join(cells_)})" if 0 < len(cells_) <= 6 else ""
+        parts.append(f"{label} in {len(held['holds'])} of {cells} cells{listed(held['holds'])}, not in "
+                     f"{len(held['does not hold'])}{listed(held['does not hold'])}, undecided in {len(held['undecided'])}")
     return ("On the VRL transport alone, as the thesis measured, its claims (both Cauchy samplers more efficient "
             "than Novák's at equal time except at g = 0.9, where Novák leads) hold for " + "; for ".join(parts)
             + " ([docs/compare/thesis_claims.md](docs/compare/thesis_claims.md)).")
