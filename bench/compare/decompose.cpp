@@ -109,7 +109,7 @@ void RenderParts(const vrlis::integration::Scene& scene, const vrlis::integratio
         Variant& v = variants[(k + round) % variants.size()];
         double seconds = 0;
         images[(k + round) % variants.size()] =
-            FromFilm(v.renderer->Render(c.sampler, seeds[rep], static_cast<std::uint64_t>(pass), &seconds));
+            FromFilm(v.renderer->Render(Method{c.sampler, false}, seeds[rep], static_cast<std::uint64_t>(pass), &seconds));
         v.seconds += seconds;
         spent += seconds;
       }

@@ -18,7 +18,7 @@ struct DecomposeConfig {
   std::string scene;
   int width = 48, height = 48;
   int vrls = 32;
-  GatherSamplers sampler = kBaseline;    // the camera sampler of the parts' renders
+  GatherSamplers sampler = kBaseline.sampler;   // the camera sampler of the parts' renders
   std::vector<GatherSamplers> samplers;  // the gathers compared in (2)
   double budget = 20;             // seconds for (1), all parts together
   double step_budget = 15;        // seconds for (2)

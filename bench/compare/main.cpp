@@ -94,7 +94,7 @@ std::string Interval(const vrlis::compare::RatioInterval& r) {
 std::string SummaryTable(const std::vector<StudyResult>& results) {
   std::ostringstream t;
   t << "| scene | g | sampler | passes | ms / pass | variance / pass | efficiency / "
-    << vrlis::compare::kBaseline.segment.name() << " (95% interval) | error² / noise² | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
+    << vrlis::compare::kBaseline.sampler.segment.name() << " (95% interval) | error² / noise² | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : results)
     for (const auto& s : r.samplers) {
       char line[384];
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> scenes = {"bidirectional", "room"};
   std::vector<float> gs = {-0.9f, 0.5f, 0.9f};
   std::vector<std::string> sampler_names;
-  bool full = false, decompose = false;
+  bool full = false, decompose = false, with_effort = false;
   StudyConfig base;
   double reference_factor = 2, decompose_seconds = 20, step_seconds = 15;
   int threads = 2;
@@ -149,6 +149,8 @@ int main(int argc, char** argv) {
   app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, budget 12 s (the published run)");
   app.add_flag("--vrl-only", base.vrl_only, "The image of the two VRL gathers alone (medium-to-medium and "
                                           "medium-to-surface), as the thesis measured, not the whole transport");
+  app.add_flag("--with-effort", with_effort, "Every sampler also with the effort control on (NAME+effort; "
+                                           "a sampler is named so in --samplers too)");
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
@@ -211,6 +213,12 @@ int main(int argc, char** argv) {
       return Fail("sampler '" + s + "' given twice");
     base.samplers.push_back(*m);
   }
+  if (with_effort)
+    for (std::size_t i = 0, n = base.samplers.size(); i < n; ++i)
+      if (!base.samplers[i].effort) {
+        vrlis::compare::Method m{base.samplers[i].sampler, true};
+        if (std::find(base.samplers.begin(), base.samplers.end(), m) == base.samplers.end()) base.samplers.push_back(m);
+      }
   if (std::find(base.samplers.begin(), base.samplers.end(), vrlis::compare::kBaseline) == base.samplers.end() ||
       base.samplers.size() < 2)
     return Fail("--samplers must name " + SamplerName(vrlis::compare::kBaseline) + " (every ratio is to it) and at least one other");
@@ -235,7 +243,8 @@ int main(int argc, char** argv) {
         c.width = base.width;
         c.height = base.height;
         c.vrls = base.vrls;
-        c.samplers = base.samplers;
+        for (const vrlis::compare::Method& m : base.samplers)
+          if (!m.effort) c.samplers.push_back(m.sampler);
         c.budget = decompose_seconds;
         c.step_budget = step_seconds;
         c.seed = base.seed;

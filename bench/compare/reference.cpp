@@ -59,7 +59,7 @@ Reference GetReference(PassRenderer& renderer, const std::vector<GatherSamplers>
   while (elapsed < seconds || stats.passes() < 2 * static_cast<int>(mixture.size())) {
     for (GatherSamplers s : mixture) {
       double t = 0;
-      stats.Add(renderer.Render(s, seed, static_cast<std::uint64_t>(stats.passes()), &t));
+      stats.Add(renderer.Render(Method{s, false}, seed, static_cast<std::uint64_t>(stats.passes()), &t));
       elapsed += t;
     }
   }

@@ -14,28 +14,56 @@
 
 namespace vrlis::compare {
 
+// What the study compares: the gather's samplers, and whether the effort control
+// (vrlis/gather/effort.hpp) decides how often each gather is taken. Named as the samplers,
+// with "+effort" when the control is on.
+struct Method {
+  GatherSamplers sampler{};
+  bool effort = false;
+  bool operator==(const Method& o) const { return sampler == o.sampler && effort == o.effort; }
+  bool operator!=(const Method& o) const { return !(*this == o); }
+};
+
+inline constexpr const char kEffortSuffix[] = "+effort";
 inline std::string SamplerName(GatherSamplers s) { return vrlis::Name(s); }
-inline std::optional<GatherSamplers> ParseSampler(const std::string& name) { return vrlis::ParseGatherSamplers(name); }
-// The default study: every camera sampler with Novák's step one.
-inline std::vector<GatherSamplers> AllSamplers() {
-  std::vector<GatherSamplers> all;
-  for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) all.push_back({m, {}});
+inline std::string SamplerName(const Method& m) { return vrlis::Name(m.sampler) + (m.effort ? kEffortSuffix : ""); }
+inline std::optional<Method> ParseSampler(std::string name) {
+  const std::string suffix = kEffortSuffix;
+  bool effort = name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  if (effort) name.resize(name.size() - suffix.size());
+  auto s = vrlis::ParseGatherSamplers(name);
+  if (!s) return std::nullopt;
+  return Method{*s, effort};
+}
+// The default study: every camera sampler with Novák's step one (VrlPoint), and FullProduct
+// with VrlMarginal as step one.
+inline std::vector<Method> AllSamplers() {
+  std::vector<Method> all;
+  for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) all.push_back({{m, {}}, false});
+  all.push_back({*vrlis::ParseGatherSamplers("full-product+marginal"), false});
   return all;
 }
-// Every ratio is to the registry's baseline (Novák's sampler) with Novák's step one.
-inline const GatherSamplers kBaseline{*vrlis::SegmentSamplers::Baseline(), vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>()};
+// Every ratio is to the registry's baseline (Novák's sampler) with Novák's step one, every
+// gather taken once.
+inline const Method kBaseline{{*vrlis::SegmentSamplers::Baseline(), vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>()}, false};
 
 // One VRL renderer of a scene; Render times a pass with the given camera sampler.
 class PassRenderer {
  public:
   PassRenderer(const vrlis::integration::Scene& scene, const vrlis::integration::RenderSettings& settings) : scene_(scene), settings_(settings) {}
-  vrlis::integration::Film Render(GatherSamplers sampler, std::uint64_t seed, std::uint64_t pass, double* seconds) {
+  // With the effort control on, `price` holds what the passes before this one taught it
+  // (one per replicate: a pass's decisions see only earlier passes of its own render).
+  vrlis::integration::Film Render(const Method& method, std::uint64_t seed, std::uint64_t pass, double* seconds,
+                                  vrlis::integration::EffortPrice* price = nullptr) {
     vrlis::integration::RenderSettings settings = settings_;
-    settings.transport.sampling = sampler;
+    settings.transport.sampling = method.sampler;
+    settings.transport.effort.on = method.effort;
     vrlis::integration::VrlRenderer renderer(scene_, settings);
+    if (method.effort && price) renderer.set_effort_price(*price);
     auto start = std::chrono::steady_clock::now();
     vrlis::integration::Film film = renderer.RenderPass(seed, pass, nullptr);
     *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (method.effort && price) *price = renderer.effort_price();
     return film;
   }
 

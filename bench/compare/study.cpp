@@ -12,12 +12,21 @@
 namespace vrlis::compare {
 namespace {
 
+// The reference's mixture: the compared samplers, each gather taken once (the effort control
+// changes the noise, not the mean).
+std::vector<GatherSamplers> Mixture(const StudyConfig& c) {
+  std::vector<GatherSamplers> out;
+  for (const Method& m : c.samplers)
+    if (std::find(out.begin(), out.end(), m.sampler) == out.end()) out.push_back(m.sampler);
+  return out;
+}
+
 // Everything a reference image depends on; a cached one is reused only if this matches.
 std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::TransportSettings& t) {
   std::ostringstream key;
   key << "v2 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
       << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " samplers=";
-  for (GatherSamplers s : c.samplers) key << SamplerName(s) << ",";
+  for (GatherSamplers s : Mixture(c)) key << SamplerName(s) << ",";
   key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect
       << t.light_caustics << t.first_segment_only << "/" << t.max_depth << "/" << t.rr_depth;
   return key.str();
@@ -34,11 +43,12 @@ double MeanOf(const std::vector<double>& x) {
 }
 
 struct Runner {
-  GatherSamplers sampler;
+  Method sampler;
   std::vector<PassStatistics> replicates;
   PassStatistics all;
   std::vector<double> seconds;  // per replicate
   std::vector<Progression> progression;
+  std::vector<vrlis::integration::EffortPrice> prices;  // per replicate, with the effort control on
 
   Replicates Summary(int per_replicate) const {
     Replicates r;
@@ -97,15 +107,17 @@ StudyResult RunStudy(const StudyConfig& config) {
   std::ostringstream name;
   name << config.scene << "_g" << config.g;
   Reference reference =
-      GetReference(renderer, config.samplers, config.reference_seconds, config.reference_dir, name.str(),
+      GetReference(renderer, Mixture(config), config.reference_seconds, config.reference_dir, name.str(),
                    ReferenceKey(config, scene.settings.transport), config.width, config.height);
 
   std::vector<std::uint64_t> seeds(replicates);
   for (std::size_t r = 0; r < replicates; ++r) seeds[r] = vrlis::integration::SplitMix64(config.seed * 1000003 + r);
   std::vector<Runner> runners;
-  for (GatherSamplers s : config.samplers)
+  for (const Method& s : config.samplers)
     runners.push_back({s, std::vector<PassStatistics>(replicates, PassStatistics(values)), PassStatistics(values),
-                       std::vector<double>(replicates, 0.0), std::vector<Progression>(replicates)});
+                       std::vector<double>(replicates, 0.0), std::vector<Progression>(replicates),
+                       std::vector<vrlis::integration::EffortPrice>(
+                           replicates, vrlis::integration::EffortPrice(config.width, config.height))});
 
   // Whole cycles (one pass of every replicate) so that all replicates hold the same number
   // of passes; at least two, for a variance within each.
@@ -122,7 +134,8 @@ StudyResult RunStudy(const StudyConfig& config) {
         Runner& run = runners[(k + round) % runners.size()];
         double seconds = 0;
         std::vector<double> pass =
-            FromFilm(renderer.Render(run.sampler, seeds[rep], static_cast<std::uint64_t>(per_replicate), &seconds));
+            FromFilm(renderer.Render(run.sampler, seeds[rep], static_cast<std::uint64_t>(per_replicate), &seconds,
+                                     &run.prices[rep]));
         run.seconds[rep] += seconds;
         run.replicates[rep].Add(pass);
         run.all.Add(pass);

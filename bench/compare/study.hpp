@@ -28,7 +28,7 @@ struct StudyConfig {
   // up to this multiple of the budget.
   double extension = 2;
   double reference_seconds = 15;  // for the mixture reference, all samplers together
-  std::vector<GatherSamplers> samplers;  // includes kBaseline
+  std::vector<Method> samplers;  // includes kBaseline
   std::uint64_t seed = 1;
   std::string reference_dir;      // shared cache of references
   // The image of the two VRL gathers alone (medium-to-medium and medium-to-surface), as the
@@ -43,7 +43,7 @@ struct Progression {
 };
 
 struct SamplerResult {
-  GatherSamplers sampler{};
+  Method sampler{};
   int passes = 0;  // over all replicates
   Replicates replicates;
   double variance = 0, seconds = 0, efficiency = 0;  // pooled over the replicates

@@ -20,39 +20,33 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats&
     sum_sq_[i] += v * v;
   }
   pixel_seconds_ += pixel_seconds;
-  gathers_[0] += medium;
-  gathers_[1] += surface;
+  const EffortStats* stats[2] = {&medium, &surface};
+  for (int kind = 0; kind < 2; ++kind) {
+    gathers_[kind] += *stats[kind];
+    if (price_[kind] == 0) uncontrolled_[kind] += *stats[kind];  // this pass took every gather once
+  }
   ++passes_;
   if (passes_ >= kMinPasses) Refresh();
 }
 
 void EffortPrice::Refresh() {
   const double n = passes_;
-  // Per 8 x 8 tile the mean variance of its pixels, the largest tenth left out; their mean.
-  std::vector<double> pixels;
+  // The mean over pixels of their variance, the largest hundredth left out.
+  std::vector<double> pixels(sum_.size());
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    double mean = sum_[i] / n;
+    pixels[i] = std::max(0.0, (sum_sq_[i] - n * mean * mean) / (n - 1));
+  }
+  const std::size_t kept = pixels.size() - pixels.size() / 100;
+  std::nth_element(pixels.begin(), pixels.begin() + static_cast<std::ptrdiff_t>(kept) - 1, pixels.end());
   double variance = 0;
-  int tiles = 0;
-  for (int ty = 0; ty < height_; ty += kTile)
-    for (int tx = 0; tx < width_; tx += kTile) {
-      pixels.clear();
-      for (int y = ty; y < std::min(height_, ty + kTile); ++y)
-        for (int x = tx; x < std::min(width_, tx + kTile); ++x) {
-          std::size_t i = static_cast<std::size_t>(y) * width_ + x;
-          double mean = sum_[i] / n;
-          pixels.push_back(std::max(0.0, (sum_sq_[i] - n * mean * mean) / (n - 1)));
-        }
-      std::sort(pixels.begin(), pixels.end());
-      std::size_t kept = pixels.size() - pixels.size() / 10;
-      double tile = 0;
-      for (std::size_t k = 0; k < kept; ++k) tile += pixels[k];
-      variance += tile / kept;
-      ++tiles;
-    }
-  variance /= tiles;
-  const double pixel_cost = pixel_seconds_ / (n * sum_.size());
+  for (std::size_t k = 0; k < kept; ++k) variance += pixels[k];
+  variance /= double(kept);
+  const double pixel_cost = pixel_seconds_ / (n * double(sum_.size()));
   for (int kind = 0; kind < 2; ++kind) {
     const EffortStats& g = gathers_[kind];
-    const double gather_cost = g.gathers > 0 ? g.seconds / double(g.gathers) : 0;
+    const EffortStats& u = uncontrolled_[kind];
+    const double gather_cost = u.gathers > 0 ? u.seconds / double(u.gathers) : 0;
     const double calibration = g.predicted > 0 ? g.measured / g.predicted : 0;
     price_[kind] = variance > 0 && gather_cost > 0 && calibration > 0
                        ? calibration * pixel_cost / (variance * gather_cost)

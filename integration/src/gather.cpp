@@ -77,6 +77,7 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
                     const vrlis::EffortSettings& effort, EffortStats* stats) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
+  Rng own = rng.Split();
   if (log)
     for (const Vrl* vrl = first; vrl != last; ++vrl)
       log->Record({camera, SegmentOf(*vrl), medium}, RmsRgb(throughput * vrl->flux));
@@ -84,7 +85,7 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
                        [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
                            vrlis::EffortTally* tally) {
                          vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
-                                                 [&] { return rng.Uniform(); }, connect, tally);
+                                                 [&] { return own.Uniform(); }, connect, tally);
                        });
 }
 
@@ -105,11 +106,12 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
                                const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
                                const vrlis::EffortSettings& effort, EffortStats* stats) {
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
+  Rng own = rng.Split();
   return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, stats,
                                 [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
                                     auto& connect, vrlis::EffortTally* tally) {
                                   vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,
-                                                           [&] { return rng.Uniform(); }, connect, tally);
+                                                           [&] { return own.Uniform(); }, connect, tally);
                                 });
 }
 

@@ -5,6 +5,7 @@
 // Russian roulette below one, splitting above, unbiased for any q > 0 (and q is never 0).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "../core/gather_query.hpp"
 #include "../core/phase.hpp"
@@ -43,10 +44,30 @@ inline double EffortQ(const EffortSettings& e, double m2) {
 inline int EffortSamples(double q, double u) { return static_cast<int>(std::floor(q + u)); }
 
 namespace detail {
-// The Henyey-Greenstein phase function's largest value, at cos = sign(g).
+// The range [lo, hi] of a . (p(s) - o) / |p(s) - o| over p(s) = p0 + s b, s in [s0, s1]
+// (|a| = |b| = 1; s1 may be infinite, where the cosine tends to a . b). Along a line the
+// cosine has at most one interior extremum, at s* = (alpha delta - beta gamma) / (beta delta
+// - alpha) with alpha = a . P, beta = a . b, gamma = P . P, delta = P . b, P = p0 - o.
 template <typename Real>
-Real PhaseMax(Real g) {
-  return HenyeyGreenstein(std::abs(g), Real(0), Real(2));
+std::pair<Real, Real> CosineRange(Vec3<Real> a, Vec3<Real> o, Vec3<Real> p0, Vec3<Real> b, Real s0, Real s1) {
+  const Vec3<Real> P = p0 - o;
+  const double alpha = Dot(a, P), beta = Dot(a, b), gamma = Dot(P, P), delta = Dot(P, b);
+  auto at = [&](double s) {
+    double len2 = gamma + 2 * delta * s + s * s;
+    return len2 > 0 ? (alpha + beta * s) / std::sqrt(len2) : beta;
+  };
+  double lo = at(s0), hi = lo;
+  auto add = [&](double c) { lo = std::min(lo, c), hi = std::max(hi, c); };
+  add(std::isfinite(double(s1)) ? at(s1) : beta);
+  double den = beta * delta - alpha, s = (alpha * delta - beta * gamma) / den;
+  if (den != 0 && s > s0 && s < s1) add(at(s));
+  return {Real(std::max(lo, -1.0)), Real(std::min(hi, 1.0))};
+}
+// The largest value of a Henyey-Greenstein lobe whose cosine lies in [lo, hi]: it is
+// monotone in the cosine, largest at hi for g > 0 and at lo for g < 0.
+template <typename Real>
+Real PhaseMax(Real g, std::pair<Real, Real> range) {
+  return HenyeyGreenstein(g, g < 0 ? range.first : range.second);
 }
 // Int_0^len dv / h(v) with h(v)^2 = r^2 + s^2 (v - v0)^2: the distance from y(v) to a line at
 // closest distance r, crossing at angle asin(s) where the VRL is at v0.
@@ -87,28 +108,46 @@ Real InverseSquareBound(const RaySegment<Real>& camera, const VrlSegment<Real>& 
 }
 
 // A bound of the medium-to-medium gather's mean, Int Int f du dv over both segments (the
-// integrand of medium_gather.hpp): both phases by their maximum, the segments' transmittances
-// by one, the connection's by exp(-sigma_t r), 1 / |w|^2 by InverseSquareBound. Cheap: no
-// sampler. (The phases at the closest points instead, a prediction rather than a bound,
-// ranked gathers worse: docs/maths.md#effort.)
+// integrand of medium_gather.hpp): 1 / |w|^2 by InverseSquareBound, each phase by its largest
+// value over the cosines the two segments allow, and the three legs' transmittance by its value
+// at (tmin, 0): the optical length (t - tmin) + v + |x(t) - y(v)| grows with t and with v (a
+// distance changes no faster than its end point). The camera phase's cosine d . w / |w|
+// (w = y - x) falls as t grows, so it is largest at tmin and smallest at tmax, and the VRL's
+// -e . w / |w| falls as v grows: each range is one CosineRange along the other segment.
+// Cheap: no sampler.
 template <typename Real>
 Real MediumGatherBound(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
   ClosestApproach<Real> c = Closest(camera, vrl);
-  return Sqr(m.sigma_s * detail::PhaseMax(m.g)) * std::exp(-m.sigma_t * c.r) * InverseSquareBound(camera, vrl, c);
+  const Vec3<Real> x0 = camera.at(camera.tmin), y0 = vrl.origin, y1 = vrl.at(vrl.length);
+  auto camera_hi = detail::CosineRange(camera.dir, x0, y0, vrl.dir, Real(0), vrl.length);
+  std::pair<Real, Real> camera_cos{Real(-1), camera_hi.second};
+  if (std::isfinite(camera.tmax))
+    camera_cos.first = detail::CosineRange(camera.dir, camera.at(camera.tmax), y0, vrl.dir, Real(0), vrl.length).first;
+  const std::pair<Real, Real> vrl_cos{
+      detail::CosineRange(vrl.dir, y1, x0, camera.dir, Real(0), camera.tmax - camera.tmin).first,
+      detail::CosineRange(vrl.dir, y0, x0, camera.dir, Real(0), camera.tmax - camera.tmin).second};
+  Real phases = detail::PhaseMax(m.g, camera_cos) * detail::PhaseMax(m.g, vrl_cos);
+  return Sqr(m.sigma_s) * phases * std::exp(-m.sigma_t * Length(y0 - x0)) * InverseSquareBound(camera, vrl, c);
 }
 
 // A bound of the medium-to-surface gather's mean, Int f dv (surface_gather.hpp, without the
 // albedo): zero when the whole VRL is behind the surface (then so is the gather; it is still
-// taken at the floor's rate), else the phase by its maximum, the cosine and the VRL's transmittance by one, the connection's by
-// exp(-sigma_t h) and Int dv / |w|^2 by min(length / h^2, pi / h), h the distance from the
-// point to the VRL's line.
+// taken at the floor's rate), else the phase by its value at the largest cosine -e . w / |w|
+// allows (it falls as v grows: the ends give its range), the cosine n . w / |w| by its largest
+// value along the VRL, the two legs' transmittance by its value at the VRL's origin
+// (v + |y(v) - x| grows with v), times Int dv / |w|^2 itself: |w|^2 = h^2 + (v - v0)^2 (h the
+// point's distance from the VRL's line, v0 its foot) integrates to a difference of arctangents.
 template <typename Real>
 Real SurfaceGatherBound(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
-  Vec3<Real> w0 = vrl.origin - point;
-  if (!(Dot(normal, w0) > 0) && !(Dot(normal, w0 + vrl.length * vrl.dir) > 0)) return 0;
-  Real h = std::max(Length(Cross(w0, vrl.dir)), Real(1e-6));
-  return m.sigma_s * detail::PhaseMax(m.g) * kInvPi<Real> * std::exp(-m.sigma_t * h) *
-         std::min(vrl.length / (h * h), kPi<Real> / h);
+  Vec3<Real> w0 = vrl.origin - point, w1 = w0 + vrl.length * vrl.dir;
+  if (!(Dot(normal, w0) > 0) && !(Dot(normal, w1) > 0)) return 0;
+  Real h = std::max(Length(Cross(w0, vrl.dir)), Real(1e-6)), v0 = -Dot(vrl.dir, w0);
+  Real l0 = Length(w0), l1 = Length(w1);
+  std::pair<Real, Real> phase_cos{l1 > 0 ? -Dot(vrl.dir, w1) / l1 : Real(-1), l0 > 0 ? -Dot(vrl.dir, w0) / l0 : Real(1)};
+  Real cosine = detail::CosineRange(normal, point, vrl.origin, vrl.dir, Real(0), vrl.length).second;
+  Real inverse_square = (std::atan((vrl.length - v0) / h) + std::atan(v0 / h)) / h;
+  return m.sigma_s * detail::PhaseMax(m.g, phase_cos) * std::max(cosine, Real(0)) * kInvPi<Real> *
+         std::exp(-m.sigma_t * l0) * inverse_square;
 }
 
 }  // namespace vrlis

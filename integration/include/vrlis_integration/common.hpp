@@ -64,8 +64,16 @@ class Rng {
              SplitMix64(index)) {}
   // Uniform in [0, 1): 24 random bits are exact in a float, so the largest value is 1 - 2^-24.
   float Uniform() { return static_cast<float>(pcg_() >> 8) * 0x1p-24f; }
+  // A stream of its own for a part of the path whose number of draws varies (a gather under
+  // the effort control): this stream advances by two numbers whatever the child draws, so
+  // the rest of the path meets the same numbers with the control on or off.
+  Rng Split() {
+    std::uint64_t a = pcg_(), b = pcg_();
+    return Rng(pcg32(SplitMix64((a << 32) | b), SplitMix64(b)));
+  }
 
  private:
+  explicit Rng(pcg32 pcg) : pcg_(pcg) {}
   pcg32 pcg_;
 };
 

@@ -47,6 +47,7 @@ class EffortPrice {
   std::vector<double> sum_, sum_sq_;  // per pixel, of one pass's RMS RGB value
   double pixel_seconds_ = 0;
   EffortStats gathers_[2];
+  EffortStats uncontrolled_[2];  // of the passes that took every gather once: the cost of one
   double price_[2] = {0, 0};
 };
 
