@@ -24,8 +24,10 @@ struct EffortSettings {
   double ceiling = 20;   // at most this many samples of one gather
 };
 
-// What the renderer needs to calibrate its predictions from a pass: the sum of the predicted
-// second moments (w x bound)^2 of the gathers considered. Its own sum of the samples'
+// What the renderer needs to calibrate its predictions from a pass: the predicted second
+// moments (w x bound)^2, summed over the samples taken with their effort weights 1 / q (an
+// unbiased estimate of their sum over the gathers considered, as the renderer's own sum
+// over the samples is of the true second moments). Its own sum of the samples'
 // (effort weight x contribution^2), visibility included, estimates the true one: their ratio,
 // learned from earlier passes, scales the price (a bound is not a second moment).
 struct EffortTally {
@@ -44,6 +46,11 @@ inline double EffortQ(const EffortSettings& e, double m2) {
 inline int EffortSamples(double q, double u) { return static_cast<int>(std::floor(q + u)); }
 
 namespace detail {
+// The Henyey-Greenstein lobe's largest value over all angles, at cos = sign(g).
+template <typename Real>
+Real PhaseMax(Real g) {
+  return HenyeyGreenstein(std::abs(g), Real(1));
+}
 // The range [lo, hi] of a . (p(s) - o) / |p(s) - o| over p(s) = p0 + s b, s in [s0, s1]
 // (|a| = |b| = 1; s1 may be infinite, where the cosine tends to a . b). Along a line the
 // cosine has at most one interior extremum, at s* = (alpha delta - beta gamma) / (beta delta
@@ -51,17 +58,17 @@ namespace detail {
 template <typename Real>
 std::pair<Real, Real> CosineRange(Vec3<Real> a, Vec3<Real> o, Vec3<Real> p0, Vec3<Real> b, Real s0, Real s1) {
   const Vec3<Real> P = p0 - o;
-  const double alpha = Dot(a, P), beta = Dot(a, b), gamma = Dot(P, P), delta = Dot(P, b);
-  auto at = [&](double s) {
-    double len2 = gamma + 2 * delta * s + s * s;
+  const Real alpha = Dot(a, P), beta = Dot(a, b), gamma = Dot(P, P), delta = Dot(P, b);
+  auto at = [&](Real s) {
+    Real len2 = gamma + 2 * delta * s + s * s;
     return len2 > 0 ? (alpha + beta * s) / std::sqrt(len2) : beta;
   };
-  double lo = at(s0), hi = lo;
-  auto add = [&](double c) { lo = std::min(lo, c), hi = std::max(hi, c); };
-  add(std::isfinite(double(s1)) ? at(s1) : beta);
-  double den = beta * delta - alpha, s = (alpha * delta - beta * gamma) / den;
+  Real lo = at(s0), hi = lo;
+  auto add = [&](Real c) { lo = std::min(lo, c), hi = std::max(hi, c); };
+  add(std::isfinite(s1) ? at(s1) : beta);
+  Real den = beta * delta - alpha, s = (alpha * delta - beta * gamma) / den;
   if (den != 0 && s > s0 && s < s1) add(at(s));
-  return {Real(std::max(lo, -1.0)), Real(std::min(hi, 1.0))};
+  return {std::max(lo, Real(-1)), std::min(hi, Real(1))};
 }
 // The largest value of a Henyey-Greenstein lobe whose cosine lies in [lo, hi]: it is
 // monotone in the cosine, largest at hi for g > 0 and at lo for g < 0.
@@ -130,6 +137,15 @@ Real MediumGatherBound(const RaySegment<Real>& camera, const VrlSegment<Real>& v
   return Sqr(m.sigma_s) * phases * std::exp(-m.sigma_t * Length(y0 - x0)) * InverseSquareBound(camera, vrl, c);
 }
 
+// MediumGatherBound with both phases by their largest value over all angles: looser, and
+// half its cost.
+template <typename Real>
+Real MediumGatherQuickBound(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
+  Real nearest = Length(vrl.origin - camera.at(camera.tmin));
+  return Sqr(m.sigma_s * detail::PhaseMax(m.g)) * std::exp(-m.sigma_t * nearest) *
+         InverseSquareBound(camera, vrl, Closest(camera, vrl));
+}
+
 // A bound of the medium-to-surface gather's mean, Int f dv (surface_gather.hpp, without the
 // albedo): zero when the whole VRL is behind the surface (then so is the gather; it is still
 // taken at the floor's rate), else the phase by its value at the largest cosine -e . w / |w|
@@ -148,6 +164,17 @@ Real SurfaceGatherBound(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<Re
   Real inverse_square = (std::atan((vrl.length - v0) / h) + std::atan(v0 / h)) / h;
   return m.sigma_s * detail::PhaseMax(m.g, phase_cos) * std::max(cosine, Real(0)) * kInvPi<Real> *
          std::exp(-m.sigma_t * l0) * inverse_square;
+}
+
+// SurfaceGatherBound with the phase by its largest value over all angles, the cosine by one
+// and Int dv / |w|^2 by min(length / h^2, pi / h): looser, and no arctangent.
+template <typename Real>
+Real SurfaceGatherQuickBound(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
+  Vec3<Real> w0 = vrl.origin - point;
+  if (!(Dot(normal, w0) > 0) && !(Dot(normal, w0 + vrl.length * vrl.dir) > 0)) return 0;
+  Real h = std::max(Length(Cross(w0, vrl.dir)), Real(1e-6));
+  return m.sigma_s * detail::PhaseMax(m.g) * kInvPi<Real> * std::exp(-m.sigma_t * Length(w0)) *
+         std::min(vrl.length / (h * h), kPi<Real> / h);
 }
 
 }  // namespace vrlis

@@ -34,12 +34,14 @@ struct GatherBatch {
   int count = 0;
 };
 
-// The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp),
-// gather(batch, samples) samples a batch. A batch is run when full and after every kSize
+// The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp)
+// and quick(i) a looser, cheaper one, which decides alone where it already puts q at the floor
+// (the tighter bound would too); gather(batch, samples) samples a batch. A batch is run when full and after every kSize
 // VRLs, so that with the control off the batches are those of one gather per VRL.
-template <int kUniforms, typename Real, typename Uniform, typename Predict, typename Gather, typename Connect>
+template <int kUniforms, typename Real, typename Uniform, typename Quick, typename Predict, typename Gather,
+          typename Connect>
 void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights, int count,
-                   bool valid, Uniform& uniform, Predict&& predict, Gather&& gather, Connect& connect,
+                   bool valid, Uniform& uniform, Quick&& quick, Predict&& predict, Gather&& gather, Connect& connect,
                    EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
   Batch batch;
@@ -54,11 +56,16 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     int n = 1;
     Real weight = 1;
     if (effort.on) {
-      double mean = usable ? double(weights[i]) * double(predict(i)) : 0;  // its bound
-      if (tally) tally->predicted += mean * mean;
-      double q = EffortQ(effort, mean * mean);
+      double m2 = -1;  // the predicted second moment, once needed
+      auto predicted = [&] {
+        if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(predict(i))) : 0;
+        return m2;
+      };
+      double q = EffortQ(effort, usable ? Sqr(double(weights[i]) * double(quick(i))) : 0);
+      if (q > effort.floor) q = EffortQ(effort, predicted());
       n = EffortSamples(q, double(uniform()));
       weight = n > 0 ? Real(1 / q) : Real(0);
+      if (tally && n > 0) tally->predicted += n * predicted() / q;
     }
     for (int j = 0; j < n; ++j) {
       Real u[kUniforms];
@@ -90,6 +97,7 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
     using StepTwo = typename decltype(step_two)::type;
     detail::GatherEachVrl<2>(
         effort, vrls, weights, count, valid, uniform,
+        [&](int i) { return MediumGatherQuickBound(camera, vrls[i], medium); },
         [&](int i) { return MediumGatherBound(camera, vrls[i], medium); },
         [&](const auto& b, GatherSample<Real>* samples) {
           SampleMediumGathers<VrlSampler, StepTwo>(ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1],
@@ -110,6 +118,7 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
     using Sampler = typename decltype(entry)::template Sampler<Real>;
     detail::GatherEachVrl<1>(
         effort, vrls, weights, count, valid, uniform,
+        [&](int i) { return SurfaceGatherQuickBound(point, normal, vrls[i], medium); },
         [&](int i) { return SurfaceGatherBound(point, normal, vrls[i], medium); },
         [&](const auto& b, GatherSample<Real>* samples) {
           SampleSurfaceGathers<Sampler>(ValidQuery{}, point, normal, medium, b.segments, b.count, b.u[0], samples);
