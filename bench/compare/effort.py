@@ -1,0 +1,141 @@
+#!/usr/bin/python3
+"""The effort control's tables, from two runs of `vrl_compare --with-effort` (two seeds).
+
+Per run and study: the best fixed published sampler at fixed effort (equiangular, Novák,
+CauchySum, CauchyMixture: every gather taken once), and against it, with a 95% interval,
+each of our own methods and every method with the effort control on (NAME+effort); the
+error against the reference over the noise (about 1 when unbiased) of every method.
+
+    effort.py RUN1 RUN2 [--publish FILE] [--command CMD]"""
+import argparse
+import math
+import os
+import statistics
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot import load, provenance  # noqa: E402
+from thesis import t975  # noqa: E402
+
+PUBLISHED = ["equiangular", "novak", "cauchy-sum", "cauchy-mixture"]
+SUFFIX = "+effort"
+
+
+def ratio(a, b):
+    """Efficiency of a over b with a 95% interval: the study's own jackknife over replicates
+    of log((var_b x sec_b) / (var_a x sec_a)) (bench/compare/efficiency.cpp)."""
+    ra, rb = a["replicates"], b["replicates"]
+    n = len(ra["variance"])
+
+    def log_ratio(skip):
+        def mean(x):
+            kept = [v for i, v in enumerate(x) if i != skip]
+            return sum(kept) / len(kept)
+        return math.log(mean(rb["variance"]) * mean(rb["seconds"])) - math.log(mean(ra["variance"]) * mean(ra["seconds"]))
+
+    whole = log_ratio(-1)
+    loo = [log_ratio(i) for i in range(n)]
+    m = sum(loo) / n
+    se = math.sqrt(sum((x - m) ** 2 for x in loo) * (n - 1) / n)
+    half = t975(n - 1) * se
+    return math.exp(whole), math.exp(whole - half), math.exp(whole + half)
+
+
+def cell(r):
+    return f"{r[0]:.2f} ({r[1]:.2f}-{r[2]:.2f})"
+
+
+def studies(run):
+    return [load(os.path.join(run, name, "result.json")) for name in load(os.path.join(run, "studies.json"))]
+
+
+def by_name(result):
+    return {s["sampler"]: s for s in result["samplers"]}
+
+
+def best_published(result):
+    s = by_name(result)
+    return max((n for n in PUBLISHED if n in s), key=lambda n: s[n]["efficiency"])
+
+
+def tables(runs):
+    """(against-best table, error table, summary lines)"""
+    names = [s["sampler"] for s in runs[0][0]["samplers"]]
+    fixed = [n for n in names if not n.endswith(SUFFIX)]
+    header = "| study | seed | best fixed published | " + " | ".join(f"`{n}`" for n in names) + " |"
+    rule = "|---|---|---|" + "---|" * len(names)
+    rows, errors, medians = [header, rule], [], {n: [] for n in names}
+    worst_error = 0
+    for seed, run in enumerate(runs, 1):
+        for r in run:
+            s, best = by_name(r), best_published(r)
+            cells = []
+            for n in names:
+                x = ratio(s[n], s[best])
+                medians[n].append(x[0])
+                cells.append(("**" if x[2] < 1 else "") + cell(x) + ("**" if x[2] < 1 else ""))
+                worst_error = max(worst_error, s[n]["error_to_noise"])
+            rows.append(f"| {r['scene']} g = {round(r['g'], 4)} | {seed} | `{best}` | " + " | ".join(cells) + " |")
+            errors.append(f"| {r['scene']} g = {round(r['g'], 4)} | {seed} | " +
+                          " | ".join(f"{s[n]['error_to_noise']:.2f}" for n in names) + " |")
+    error_table = ["| study | seed | " + " | ".join(f"`{n}`" for n in names) + " |", "|---|---|" + "---|" * len(names)]
+    summary = []
+    for n in names:
+        below = sum(1 for run in runs for r in run if ratio(by_name(r)[n], by_name(r)[best_published(r)])[2] < 1)
+        summary.append(f"| `{n}` | {statistics.median(medians[n]):.2f} | {below} of {len(medians[n])} |")
+    gains = []
+    for n in fixed:
+        if n + SUFFIX in names:
+            g = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run]
+            gains.append(f"| `{n}` | {statistics.median(g):.2f} | {min(g):.2f}-{max(g):.2f} |")
+    return rows, error_table + errors, summary, gains, worst_error
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("runs", nargs=2)
+    ap.add_argument("--publish")
+    ap.add_argument("--command", default="tools/effort.sh")
+    a = ap.parse_args()
+    runs = [studies(r) for r in a.runs]
+    rows, errors, summary, gains, worst = tables(runs)
+    page = "\n".join([
+        "# The effort control against the best fixed sampler",
+        "",
+        provenance(a.command),
+        "",
+        "Every method of the default study (bidirectional scene and room, g in {-0.9, 0.5, 0.9}), each "
+        "also with the effort control on (`NAME+effort`: Russian roulette and splitting of every VRL "
+        "gather by a price of variance learned from earlier passes, [../maths.md](../maths.md#effort)), "
+        "in two runs with seeds 1 and 2. Each cell is the method's efficiency over that study's best "
+        "fixed published sampler (equiangular, Novák, CauchySum, CauchyMixture, every gather taken once) "
+        "with its 95% interval; **bold**: the interval lies below 1.",
+        "",
+        "| method | median over the cells | cells whose interval lies below 1 |",
+        "|---|---|---|",
+        *summary,
+        "",
+        "The effort control's own gain, `NAME+effort` over `NAME` (median and range over the cells):",
+        "",
+        "| method | median | range |",
+        "|---|---|---|",
+        *gains,
+        "",
+        "## Per study",
+        "",
+        *rows,
+        "",
+        f"## error² / noise² (about 1 when unbiased; largest {worst:.2f})",
+        "",
+        *errors,
+        "",
+    ])
+    print(page)
+    if a.publish:
+        with open(a.publish + ".tmp", "w") as f:
+            f.write(page)
+        os.replace(a.publish + ".tmp", a.publish)
+
+
+if __name__ == "__main__":
+    main()
