@@ -157,7 +157,8 @@ TEST_CASE("the gather bounds are at or above the gathers' means", "[gather][effo
     double medium = 0, surface = 0;
     const int n = 4000;
     for (int k = 0; k < n; ++k) {
-      medium += vrlis::SampleMediumGather(s.method, vrlis::MediumGatherQuery<Real>{s.camera, s.vrls[i], s.medium}, u(rng), u(rng)).weight;
+      const Real u_vrl = u(rng), u_camera = u(rng);  // named: argument order is unspecified
+      medium += vrlis::SampleMediumGather(s.method, vrlis::MediumGatherQuery<Real>{s.camera, s.vrls[i], s.medium}, u_vrl, u_camera).weight;
       surface += vrlis::SampleSurfaceGather(s.method.segment, vrlis::SurfaceGatherQuery<Real>{point, normal, s.vrls[i], s.medium}, u(rng)).weight;
     }
     INFO("VRL " << i);
