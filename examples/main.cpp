@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
     // A rejected query contributes nothing: say so rather than leave a dark image unexplained.
     const vrlis::QueryRejections rejected = vrlis::RejectedQueries().since(before);
     if (rejected.total() > 0)
-      std::fprintf(stderr, "%svrl_render: warning: pass %d rejected %llu gather queries: %s\n", bar ? "\n" : "", pass,
+      std::fprintf(stderr, "%svrl_render: warning: pass %d rejected %llu gather queries: %s\n", bar ? "\n" : "", pass + 1,
                    static_cast<unsigned long long>(rejected.total()), vrlis::Describe(rejected).c_str());
     passes_done.store(pass + 1);
     vrl_count += stats.vrls;
