@@ -6,6 +6,8 @@
 //   GatherBatch/<method>/g:<g>  SampleMediumGathers: one camera segment against kVrlPointBatch
 //                           VRLs (the camera of configuration 8k, the VRLs of 8k .. 8k + 7),
 //                           time per iteration, that is per batch (divide by 8 for one gather)
+//   GatherBatchDouble/<method>/g:<g>  the same in double (the same configurations, converted):
+//                           the price of double precision (docs/porting.md#precision)
 //   SurfaceGatherBatch/<method>/g:<g>  SampleSurfaceGathers: the VRLs of 8k .. 8k + 7 seen from
 //                           the camera origin of configuration 8k, a surface point whose normal is
 //                           that camera's direction (the medium-to-surface gather); per batch
@@ -39,14 +41,19 @@ void Gather(benchmark::State& state, SegmentChoice method, double g) {
   });
 }
 
-// The pool's VRLs and random numbers as the arrays the batched gathers take.
+// The pool's queries, VRLs and random numbers as the arrays the batched gathers take, in Real.
+template <typename Real>
 struct BatchInputs {
-  std::vector<VrlSegment<float>> vrls;
-  std::vector<float> u_vrl, u_camera;
+  std::vector<MediumGatherQuery<Real>> queries;
+  std::vector<VrlSegment<Real>> vrls;
+  std::vector<Real> u_vrl, u_camera;
 };
-BatchInputs BatchInputsOf(const Pools& pools) {
-  BatchInputs in;
-  for (const Config<float>& c : pools.configs) {
+template <typename Real>
+BatchInputs<Real> BatchInputsOf(const Pools& pools) {
+  BatchInputs<Real> in;
+  for (const Config<float>& f : pools.configs) {
+    const Config<Real> c = f.template as<Real>();
+    in.queries.push_back(c.query);
     in.vrls.push_back(c.query.vrl);
     in.u_vrl.push_back(c.xi_vrl);
     in.u_camera.push_back(c.xi_cam);
@@ -54,16 +61,16 @@ BatchInputs BatchInputsOf(const Pools& pools) {
   return in;
 }
 
+template <typename Real>
 void GatherBatch(benchmark::State& state, SegmentChoice method, double g) {
-  const Pools& pools = PoolsFor(g);
-  const BatchInputs in = BatchInputsOf(pools);
+  const BatchInputs<Real> in = BatchInputsOf<Real>(PoolsFor(g));
   const size_t batches = in.vrls.size() / kVrlPointBatch;
-  WithGatherSamplers<float>(GatherSamplers{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
-    GatherSample<float> out[kVrlPointBatch];
+  WithGatherSamplers<Real>(GatherSamplers{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
+    GatherSample<Real> out[kVrlPointBatch];
     size_t b = 0;
     for (auto _ : state) {
       const size_t first = b * kVrlPointBatch;
-      const MediumGatherQuery<float>& q = pools.configs[first].query;
+      const MediumGatherQuery<Real>& q = in.queries[first];
       SampleMediumGathers<typename decltype(step_one)::type, typename decltype(step_two)::type>(
           ValidQuery{}, q.camera, q.medium, &in.vrls[first], kVrlPointBatch, &in.u_vrl[first], &in.u_camera[first], out);
       benchmark::DoNotOptimize(out);
@@ -74,15 +81,14 @@ void GatherBatch(benchmark::State& state, SegmentChoice method, double g) {
 }
 
 void SurfaceGatherBatch(benchmark::State& state, SegmentChoice method, double g) {
-  const Pools& pools = PoolsFor(g);
-  const BatchInputs in = BatchInputsOf(pools);
+  const BatchInputs<float> in = BatchInputsOf<float>(PoolsFor(g));
   const size_t batches = in.vrls.size() / kVrlPointBatch;
   SegmentSamplers::WithEntry(method, [&](auto entry) {
     GatherSample<float> out[kVrlPointBatch];
     size_t b = 0;
     for (auto _ : state) {
       const size_t first = b * kVrlPointBatch;
-      const MediumGatherQuery<float>& q = pools.configs[first].query;
+      const MediumGatherQuery<float>& q = in.queries[first];
       SampleSurfaceGathers<typename decltype(entry)::template Sampler<float>>(
           ValidQuery{}, q.camera.origin, q.camera.dir, q.medium, &in.vrls[first], kVrlPointBatch, &in.u_vrl[first], out);
       benchmark::DoNotOptimize(out);
@@ -132,7 +138,11 @@ void RegisterGather() {
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("GatherBatch", std::string(method.name()).c_str(), g).c_str(),
-                                   [method, g](benchmark::State& s) { GatherBatch(s, method, g); });
+                                   [method, g](benchmark::State& s) { GatherBatch<float>(s, method, g); });
+  for (SegmentChoice method : kSegmentSamplers)
+    for (double g : kGatherG)
+      benchmark::RegisterBenchmark(BenchName("GatherBatchDouble", std::string(method.name()).c_str(), g).c_str(),
+                                   [method, g](benchmark::State& s) { GatherBatch<double>(s, method, g); });
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("SurfaceGatherBatch", std::string(method.name()).c_str(), g).c_str(),

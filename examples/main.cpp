@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include <vrlis/core/query_rejections.hpp>
 #include <vrlis_integration/query_log.hpp>
 #include <vrlis_integration/renderer.hpp>
 #include <vrlis_scenes/image_io.hpp>
@@ -174,6 +175,7 @@ int main(int argc, char** argv) {
   if (exposure && !(*exposure > 0 && std::isfinite(*exposure))) return Fail("--exposure must be positive");
   auto built = vrlis::scenes::BuildScene(scene_name, {g, sigma_s, sigma_a});
   if (!built) return Fail("unknown scene '" + scene_name + "' (expected " + JoinNames() + ")");
+  if (!std::isfinite(built->scene.medium.SigmaT())) return Fail("--sigma-s + --sigma-a must be finite");
   if (gather == "m2s" && !built->has_surfaces)
     return Fail("--gather m2s: scene '" + scene_name + "' has no surfaces to gather at (use m2m or all)");
   std::optional<vrlis::integration::Film> ref;
@@ -242,7 +244,13 @@ int main(int argc, char** argv) {
     if (timed ? (pass > 0 && elapsed() >= seconds) : pass >= spp) break;
     vrlis::integration::PassStats stats;
     rows_done.store(0);
+    const vrlis::QueryRejections before = vrlis::RejectedQueries();
     acc.Add(renderer->RenderPass(seed, static_cast<std::uint64_t>(pass), &stats));
+    // A rejected query contributes nothing: say so rather than leave a dark image unexplained.
+    const vrlis::QueryRejections rejected = vrlis::RejectedQueries().since(before);
+    if (rejected.total() > 0)
+      std::fprintf(stderr, "%svrl_render: warning: pass %d rejected %llu gather queries: %s\n", bar ? "\n" : "", pass + 1,
+                   static_cast<unsigned long long>(rejected.total()), vrlis::Describe(rejected).c_str());
     passes_done.store(pass + 1);
     vrl_count += stats.vrls;
     gathers += stats.gathers;

@@ -21,6 +21,7 @@
 #include "gather/point_light_gather.hpp"
 #include "gather/effort.hpp"
 #include "gather/gather_vrls.hpp"
+#include "xyz.hpp"
 
 namespace vrlis {
 static_assert(IsSegmentSampler<Equiangular<float>>::value && IsSegmentSampler<Equiangular<double>>::value);

@@ -7,7 +7,9 @@
 namespace vrlis::integration {
 namespace {
 
-vrlis::Medium<float> MediumOf(const HomogeneousMedium& m) { return {m.g, m.sigma_s, m.SigmaT()}; }
+vrlis::Medium<float> MediumOf(const HomogeneousMedium& m) {
+  return vrlis::Medium<float>::FromAbsorptionScattering(m.g, m.sigma_a, m.sigma_s);
+}
 vrlis::RaySegment<float> SegmentOf(const CameraSegment& seg) { return {seg.ray.o, seg.ray.d, seg.iv.a, seg.iv.b}; }
 vrlis::VrlSegment<float> SegmentOf(const Vrl& vrl) { return {vrl.origin, vrl.dir, vrl.length}; }
 

@@ -64,8 +64,10 @@ Q RandomQuery(std::mt19937_64& rng) {
   if (sigma_t > 0) length = std::min(length, 14 / sigma_t);
   double h = std::pow(10.0, -2 + 2.5 * u(rng));
   vrlis::Vec3<double> dir = unit(), n = vrlis::Normalize(vrlis::Cross(dir, unit()));
-  Q q = vrlis::MediumToMediumQuery<double>({0, 0, 0}, dir, 0, length, (length * (1.5 * u(rng) - 0.25)) * dir + h * n,
-                                            unit(), asymmetry(), sigma_t);
+  // One draw per statement: the order of a call's arguments is unspecified.
+  const vrlis::Vec3<double> point = (length * (1.5 * u(rng) - 0.25)) * dir + h * n, vrl_dir = unit();
+  const double g = asymmetry();
+  Q q = vrlis::MediumToMediumQuery<double>({0, 0, 0}, dir, 0, length, point, vrl_dir, g, sigma_t);
   q.lobe.g = asymmetry();
   return q;
 }

@@ -164,7 +164,8 @@ TEST_CASE("the gather bounds are at or above the gathers' means, the quick ones 
   int tight_medium = 0, tight_surface = 0;
   for (int c = 0; c < 120; ++c) {
     const double g = (c % 2 ? 1 : -1) * (0.3 + 0.3 * (c / 2 % 3));
-    const vrlis::Medium<double> medium{g, 0.3 + 0.5 * u(rng), 0.9 + 0.5 * u(rng)};
+    const double sigma_s = 0.3 + 0.5 * u(rng), sigma_t = 0.9 + 0.5 * u(rng);
+    const auto medium = vrlis::Medium<double>::FromScatteringExtinction(g, sigma_s, sigma_t);
     const vrlis::RaySegment<double> camera{{0, 0, 0}, direction(), 0.2 * u(rng), 0.5 + 4 * u(rng)};
     const vrlis::VrlSegment<double> vrl{{4 * u(rng) - 2, 4 * u(rng) - 2, 4 * u(rng) - 2}, direction(), 0.3 + 3 * u(rng)};
     const vrlis::Vec3<double> point{4 * u(rng) - 2, 4 * u(rng) - 2, 4 * u(rng) - 2}, normal = direction();

@@ -2,7 +2,8 @@
 // equals the integral of f (computed by adaptive Gauss-Kronrod quadrature). Each mean is
 // compared by its z-score against the two-sided normal critical value at 1 % overall,
 // Bonferroni-corrected over every comparison in this file; each case also checks that the
-// same samples reject an integral 10 % off (the test can fail).
+// same samples reject an integral 10 % off (the test can fail). An RGB medium sampled through
+// its grey query: each channel's GatherSample::weight_for against that channel's integral.
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <catch2/catch.hpp>
@@ -19,7 +20,8 @@ namespace {
 
 using vrlis::Vec3;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int kComparisons = 3 * 10 * 2 + 3 * 5 * 2 + 3 * 5 * 2;  // medium, surface, point light x float, double
+// medium, surface, point light x float, double; an RGB medium's channels (3 cases x 2 samplers x 3)
+constexpr int kComparisons = 3 * 10 * 2 + 3 * 5 * 2 + 3 * 5 * 2 + 3 * 2 * 3;
 
 double Critical() {
   return boost::math::quantile(boost::math::normal(), 1 - 0.01 / (2 * kComparisons));
@@ -37,7 +39,8 @@ std::pair<double, double> MeanAndError(Estimate estimate, int n, unsigned seed) 
   std::uniform_real_distribution<double> uniform(0, 1);
   vrlis::RunningMoments weights;
   for (int i = 0; i < n; ++i) {
-    double w = estimate(Real(uniform(rng)), Real(uniform(rng)));
+    const Real u1 = Real(uniform(rng)), u2 = Real(uniform(rng));  // named: argument order is unspecified
+    double w = estimate(u1, u2);
     REQUIRE(std::isfinite(w));
     weights.add(w);
   }
@@ -104,6 +107,38 @@ void MediumGatherIsUnbiased(const char* type) {
   }
 }
 
+// An RGB medium sampled through its grey query medium: each channel's weight_for, averaged,
+// is that channel's integral (the query's g, the channel's coefficients). Two samplers: one
+// whose sampling ignores sigma_t, one (FullProduct) whose sampling follows the grey sigma_t.
+template <typename Real>
+void MediumChannelsAreUnbiased() {
+  const double extinction[3] = {0.6, 1, 1.7}, albedo[3] = {0.9, 0.5, 0.2};
+  for (int k = 0; k < 3; ++k) {
+    const vrlis::MediumGatherQuery<Real> q = MediumCase<Real>(k);
+    vrlis::Medium<Real> channel[3];
+    double integral[3];
+    for (int c = 0; c < 3; ++c) {
+      const Real sigma_t = Real(q.medium.sigma_t * extinction[c]);
+      channel[c] = vrlis::Medium<Real>::FromScatteringExtinction(q.medium.g, Real(albedo[c]) * sigma_t, sigma_t);
+      integral[c] = MediumIntegral(vrlis::MediumGatherQuery<Real>{q.camera, q.vrl, channel[c]});
+    }
+    for (const char* name : {"novak", "full-product+marginal"}) {
+      const vrlis::GatherSamplers m = *vrlis::ParseGatherSamplers(name);
+      std::mt19937_64 rng(37 + k);
+      std::uniform_real_distribution<double> uniform(0, 1);
+      vrlis::RunningMoments weights[3];
+      for (int i = 0; i < 200000; ++i) {
+        const Real u1 = Real(uniform(rng)), u2 = Real(uniform(rng));
+        const vrlis::GatherSample<Real> s = vrlis::SampleMediumGather(m, q, u1, u2);
+        for (int c = 0; c < 3; ++c) weights[c].add(double(s.weight_for(channel[c])));
+      }
+      for (int c = 0; c < 3; ++c)
+        CheckUnbiased("RGB medium case " + std::to_string(k) + " channel " + std::to_string(c) + " " + name,
+                      {weights[c].mean(), weights[c].standard_error()}, integral[c]);
+    }
+  }
+}
+
 template <typename Real>
 vrlis::SurfaceGatherQuery<Real> SurfaceCase(int k) {
   Vec3<Real> p{0, -1, -2}, n{0, 1, 0};
@@ -154,3 +189,6 @@ TEST_CASE("medium-to-surface gather: every sampler is unbiased (double)") { Surf
 TEST_CASE("medium-to-surface gather: every sampler is unbiased (float)") { SurfaceGatherIsUnbiased<float>("float"); }
 TEST_CASE("point-light gather: every sampler is unbiased (double)") { PointLightGatherIsUnbiased<double>("double"); }
 TEST_CASE("point-light gather: every sampler is unbiased (float)") { PointLightGatherIsUnbiased<float>("float"); }
+TEST_CASE("medium-to-medium gather: an RGB medium's channel weights are unbiased (float)") {
+  MediumChannelsAreUnbiased<float>();
+}

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace {
@@ -39,8 +40,8 @@ void MediumQueriesAreValidated() {
       {"negative VRL length", E::ReversedSegment, [](auto& q) { q.vrl.length = -1; }},
       {"g = 1", E::InvalidAsymmetry, [](auto& q) { q.medium.g = 1; }},
       {"negative extinction", E::NegativeExtinction, [](auto& q) { q.medium.sigma_t = -1; }},
-      {"scattering above extinction", E::InvalidScattering, [](auto& q) { q.medium.sigma_s = 1; }},
-      {"negative scattering", E::InvalidScattering, [](auto& q) { q.medium.sigma_s = -Real(0.1); }},
+      {"scattering above extinction", E::ScatteringExceedsExtinction, [](auto& q) { q.medium.sigma_s = 1; }},
+      {"negative scattering", E::NegativeScattering, [](auto& q) { q.medium.sigma_s = -Real(0.1); }},
       {"camera origin out of range", E::OutOfRange, [&](auto& q) { q.camera.origin.y = huge; }},
       {"VRL origin out of range", E::OutOfRange, [&](auto& q) { q.vrl.origin.x = -huge; }},
       {"unbounded camera segment", E::None, [&](auto& q) { q.camera.tmax = inf; }},
@@ -112,4 +113,21 @@ TEST_CASE("gather methods are named camera[+vrl] and parse back") {
   CHECK_FALSE(vrlis::ParseGatherSamplers("nvak"));
   CHECK_FALSE(vrlis::ParseGatherSamplers("novak+novak"));
   CHECK_FALSE(vrlis::ParseGatherSamplers(""));
+}
+
+TEST_CASE("Medium's factories name the coefficients; a misfill is rejected by name") {
+  using E = vrlis::QueryError;
+  using M = vrlis::Medium<float>;
+  const M absorbing = M::FromAbsorptionScattering(0.5f, 0.1f, 0.3f);
+  CHECK(absorbing.g == 0.5f);
+  CHECK(absorbing.sigma_s == 0.3f);
+  CHECK(absorbing.sigma_t == 0.1f + 0.3f);
+  const M extinct = M::FromScatteringExtinction(0.5f, 0.3f, 0.4f);
+  CHECK((extinct.g == 0.5f && extinct.sigma_s == 0.3f && extinct.sigma_t == 0.4f));
+  CHECK(vrlis::Validate(absorbing) == E::None);
+  // sigma_s and sigma_t swapped, and a negative absorption: scattering above extinction.
+  CHECK(vrlis::Validate(M::FromScatteringExtinction(0.5f, 0.4f, 0.3f)) == E::ScatteringExceedsExtinction);
+  CHECK(vrlis::Validate(M::FromAbsorptionScattering(0.5f, -0.1f, 0.3f)) == E::ScatteringExceedsExtinction);
+  CHECK(vrlis::Validate(M::FromAbsorptionScattering(0.5f, 0.5f, -0.3f)) == E::NegativeScattering);
+  CHECK(std::string(vrlis::Describe(E::ScatteringExceedsExtinction)).find("sigma_a + sigma_s") != std::string::npos);
 }

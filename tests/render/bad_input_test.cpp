@@ -52,6 +52,7 @@ TEST_CASE("bad input exits with code 2, one line, and writes nothing", "[render]
       {"--scene cube --g nan", "--g"},
       {"--scene cube --sigma-s -0.1", "--sigma-s"},
       {"--scene cube --sigma-a -1", "--sigma-a"},
+      {"--scene cube --sigma-s 3e38 --sigma-a 3e38", "--sigma-s + --sigma-a"},
       {"--scene cube --width 0", "--width"},
       {"--scene cube --height -4", "--height"},
       {"--scene cube --spp 0", "--spp"},
@@ -84,6 +85,7 @@ TEST_CASE("bad input exits with code 2, one line, and writes nothing", "[render]
   CHECK_FALSE(Exists(out + ".exr"));
   Run ok = Render(base + "--scene cube");
   CHECK(ok.code == 0);
+  CHECK(ok.err.empty());  // no warning either: the scene's gather queries are all valid
   CHECK(Exists(out + ".exr"));
   CHECK(Exists(out + ".png"));
   CHECK(Exists(out + ".json"));

@@ -4,6 +4,7 @@
 // three queries are the library's one model of a gather configuration; the samplers' own
 // queries (SegmentQuery, VrlPointQuery) are built from them.
 #include "query.hpp"
+#include "query_rejections.hpp"
 
 namespace vrlis {
 
@@ -25,9 +26,15 @@ struct VrlSegment {
 };
 
 // A homogeneous medium: Henyey-Greenstein asymmetry, scattering and extinction coefficients.
+// Build it by name: renderers store (sigma_a, sigma_s) or (sigma_s, sigma_t), and a
+// positional {g, sigma_a, sigma_s} would be a valid medium with the wrong extinction. (The
+// aggregate stays for code that fills the fields by name.)
 template <typename Real>
 struct Medium {
   Real g = 0, sigma_s = 0, sigma_t = 0;
+
+  static Medium FromAbsorptionScattering(Real g, Real sigma_a, Real sigma_s) { return {g, sigma_s, sigma_a + sigma_s}; }
+  static Medium FromScatteringExtinction(Real g, Real sigma_s, Real sigma_t) { return {g, sigma_s, sigma_t}; }
 };
 
 // Medium to medium: light scattered at a VRL point, again at a camera-segment point, then
@@ -68,7 +75,8 @@ template <typename Real>
 QueryError ValidateMedium(const Medium<Real>& m) {
   if (!IsAsymmetry(m.g)) return QueryError::InvalidAsymmetry;
   if (!(m.sigma_t >= 0)) return QueryError::NegativeExtinction;
-  if (!(m.sigma_s >= 0 && m.sigma_s <= m.sigma_t)) return QueryError::InvalidScattering;
+  if (!(m.sigma_s >= 0)) return QueryError::NegativeScattering;
+  if (!(m.sigma_s <= m.sigma_t)) return QueryError::ScatteringExceedsExtinction;
   return QueryError::None;
 }
 template <typename Real>
@@ -91,32 +99,33 @@ QueryError ValidateVrl(const VrlSegment<Real>& v) {
 
 // The parts of a gather query on their own, finiteness included. A medium-to-medium query
 // is valid exactly when its camera segment, VRL and medium are: a renderer validates a
-// camera segment once for all the VRLs it gathers, not once per gather.
+// camera segment once for all the VRLs it gathers, not once per gather. Every error these
+// return is counted (query_rejections.hpp).
 template <typename Real>
 QueryError Validate(const RaySegment<Real>& s) {
-  if (!detail::AllFinite(s.origin, s.dir, s.tmin) || std::isnan(s.tmax)) return QueryError::NonFinite;
-  return detail::ValidateSegment(s);
+  if (!detail::AllFinite(s.origin, s.dir, s.tmin) || std::isnan(s.tmax)) return detail::Counted(QueryError::NonFinite);
+  return detail::Counted(detail::ValidateSegment(s));
 }
 
 template <typename Real>
 QueryError Validate(const VrlSegment<Real>& v) {
-  if (!detail::AllFinite(v.origin, v.dir, v.length)) return QueryError::NonFinite;
-  return detail::ValidateVrl(v);
+  if (!detail::AllFinite(v.origin, v.dir, v.length)) return detail::Counted(QueryError::NonFinite);
+  return detail::Counted(detail::ValidateVrl(v));
 }
 
 template <typename Real>
 QueryError Validate(const Medium<Real>& m) {
-  if (!detail::AllFinite(m.g, m.sigma_s, m.sigma_t)) return QueryError::NonFinite;
-  return detail::ValidateMedium(m);
+  if (!detail::AllFinite(m.g, m.sigma_s, m.sigma_t)) return detail::Counted(QueryError::NonFinite);
+  return detail::Counted(detail::ValidateMedium(m));
 }
 
 // The surface point of a medium-to-surface query on its own: a query is valid exactly when
 // its point, its VRL and its medium are.
 template <typename Real>
 QueryError ValidateSurfacePoint(Vec3<Real> point, Vec3<Real> normal) {
-  if (!detail::AllFinite(point, normal)) return QueryError::NonFinite;
-  if (!detail::IsUnit(normal)) return QueryError::NotUnitDirection;
-  if (!detail::InRange(point)) return QueryError::OutOfRange;
+  if (!detail::AllFinite(point, normal)) return detail::Counted(QueryError::NonFinite);
+  if (!detail::IsUnit(normal)) return detail::Counted(QueryError::NotUnitDirection);
+  if (!detail::InRange(point)) return detail::Counted(QueryError::OutOfRange);
   return QueryError::None;
 }
 
@@ -127,21 +136,21 @@ QueryError Validate(const MediumGatherQuery<Real>& q) {
   if (!detail::AllFinite(c.origin, c.dir, v.origin, v.dir, c.tmin, v.length, q.medium.g, q.medium.sigma_s,
                          q.medium.sigma_t) ||
       std::isnan(c.tmax))
-    return QueryError::NonFinite;
-  if (QueryError e = detail::ValidateSegment(c); e != QueryError::None) return e;
-  if (QueryError e = detail::ValidateVrl(v); e != QueryError::None) return e;
-  return detail::ValidateMedium(q.medium);
+    return detail::Counted(QueryError::NonFinite);
+  if (QueryError e = detail::ValidateSegment(c); e != QueryError::None) return detail::Counted(e);
+  if (QueryError e = detail::ValidateVrl(v); e != QueryError::None) return detail::Counted(e);
+  return detail::Counted(detail::ValidateMedium(q.medium));
 }
 
 template <typename Real>
 QueryError Validate(const SurfaceGatherQuery<Real>& q) {
   const auto& v = q.vrl;
   if (!detail::AllFinite(q.point, q.normal, v.origin, v.dir, v.length, q.medium.g, q.medium.sigma_s, q.medium.sigma_t))
-    return QueryError::NonFinite;
-  if (!detail::IsUnit(q.normal)) return QueryError::NotUnitDirection;
-  if (!detail::InRange(q.point)) return QueryError::OutOfRange;
-  if (QueryError e = detail::ValidateVrl(v); e != QueryError::None) return e;
-  return detail::ValidateMedium(q.medium);
+    return detail::Counted(QueryError::NonFinite);
+  if (!detail::IsUnit(q.normal)) return detail::Counted(QueryError::NotUnitDirection);
+  if (!detail::InRange(q.point)) return detail::Counted(QueryError::OutOfRange);
+  if (QueryError e = detail::ValidateVrl(v); e != QueryError::None) return detail::Counted(e);
+  return detail::Counted(detail::ValidateMedium(q.medium));
 }
 
 template <typename Real>
@@ -149,10 +158,10 @@ QueryError Validate(const PointLightGatherQuery<Real>& q) {
   const auto& c = q.camera;
   if (!detail::AllFinite(c.origin, c.dir, q.light, c.tmin, q.medium.g, q.medium.sigma_s, q.medium.sigma_t) ||
       std::isnan(c.tmax))
-    return QueryError::NonFinite;
-  if (!detail::InRange(q.light)) return QueryError::OutOfRange;
-  if (QueryError e = detail::ValidateSegment(c); e != QueryError::None) return e;
-  return detail::ValidateMedium(q.medium);
+    return detail::Counted(QueryError::NonFinite);
+  if (!detail::InRange(q.light)) return detail::Counted(QueryError::OutOfRange);
+  if (QueryError e = detail::ValidateSegment(c); e != QueryError::None) return detail::Counted(e);
+  return detail::Counted(detail::ValidateMedium(q.medium));
 }
 
 }  // namespace vrlis

@@ -76,9 +76,11 @@ enum class QueryError {
   ReversedSegment,    // tmax < tmin
   InvalidAsymmetry,   // |g| >= 1
   NegativeExtinction,
-  InvalidScattering,  // sigma_s < 0 or sigma_s > sigma_t
-  OutOfRange,         // a coordinate beyond MaxCoordinate<Real>(): squared distances would overflow
+  NegativeScattering,
+  ScatteringExceedsExtinction,  // sigma_s > sigma_t: typically (sigma_a, sigma_s) given as (sigma_s, sigma_t)
+  OutOfRange,                   // a coordinate beyond MaxCoordinate<Real>(): squared distances would overflow
 };
+inline constexpr int kQueryErrorCount = static_cast<int>(QueryError::OutOfRange) + 1;
 
 inline const char* Describe(QueryError e) {
   switch (e) {
@@ -88,7 +90,9 @@ inline const char* Describe(QueryError e) {
     case QueryError::ReversedSegment: return "segment has tmax < tmin";
     case QueryError::InvalidAsymmetry: return "Henyey-Greenstein g outside (-1, 1)";
     case QueryError::NegativeExtinction: return "negative extinction";
-    case QueryError::InvalidScattering: return "scattering coefficient outside [0, extinction]";
+    case QueryError::NegativeScattering: return "negative scattering coefficient";
+    case QueryError::ScatteringExceedsExtinction:
+      return "scattering coefficient above extinction (sigma_t = sigma_a + sigma_s; see Medium's factories)";
     case QueryError::OutOfRange: return "coordinate too large for this floating-point type";
   }
   return "unknown";

@@ -6,6 +6,15 @@
 
 namespace vrlis {
 
+namespace detail {
+// The medium's share of a gather's integrand: sigma_s once per scattering event (1 or 2),
+// and the transmittance of the light's whole way through the medium.
+template <typename Real>
+Real MediumFactor(Real sigma_s, Real sigma_t, int scatterings, Real path_length) {
+  return (scatterings == 2 ? sigma_s * sigma_s : sigma_s) * std::exp(-sigma_t * path_length);
+}
+}  // namespace detail
+
 template <typename Real>
 struct GatherSample {
   Vec3<Real> camera_point{}, light_point{};  // the ends of the occlusion ray
@@ -15,8 +24,36 @@ struct GatherSample {
   // does not fill the connection replaces it by its own transmittance (weight / transmittance).
   Real transmittance = 0;
   Real weight = 0;  // 0: nothing to trace
+  // The weight's factors, for coefficients that differ per channel (RGB, spectral; g is
+  // shared): weight == bare_weight * sigma_s^scatterings * exp(-sigma_t * path_length).
+  Real bare_weight = 0;  // the weight at sigma_s = 1, sigma_t = 0; 0: nothing to trace in any channel
+  // The light's way through the medium, the legs the gather has: (t - tmin) on the camera
+  // segment, v on the VRL, and the connection |light_point - camera_point|.
+  Real path_length = 0;
+  int scatterings = 0;  // 2 medium to medium; 1 medium to surface and single scattering
 
   bool contributes() const { return weight > 0; }
+  // The weight in one channel of the medium, its coefficients built as the query's were (its
+  // g must be the query's). The points and pdfs stay those sampled for the query's medium, so
+  // the weight is unbiased in every channel.
+  Real weight_for(const Medium<Real>& channel) const {
+    return bare_weight * detail::MediumFactor(channel.sigma_s, channel.sigma_t, scatterings, path_length);
+  }
+};
+
+// A gather's integrand at one sample without visibility, factored as GatherSample's weight:
+// f = bare sigma_s^scatterings exp(-sigma_t path_length); connection is |y - x|.
+template <typename Real>
+struct IntegrandFactors {
+  Real bare = 0, path_length = 0, connection = 0;  // bare 0: the integrand vanishes
+  int scatterings = 0;
+
+  // The integrand's value in the medium m, and the connection's transmittance if asked.
+  Real value(const Medium<Real>& m, Real* transmittance = nullptr) const {
+    if (!(bare > 0)) return 0;
+    if (transmittance) *transmittance = std::exp(-m.sigma_t * connection);
+    return bare * detail::MediumFactor(m.sigma_s, m.sigma_t, scatterings, path_length);
+  }
 };
 
 namespace detail {
@@ -25,12 +62,18 @@ bool Usable(SegmentSample<Real> s) {
   return s.pdf > 0 && std::isfinite(s.pdf) && std::isfinite(s.t);
 }
 
-// Fills the connection and the weight f / pdf from the integrand f; any non-finite or
-// non-positive outcome becomes "nothing to trace" (never a NaN in an image).
 template <typename Real>
-GatherSample<Real> Finish(GatherSample<Real> s, Real f, Real pdf) {
-  s.weight = f / pdf;
-  if (!(s.weight > 0) || !std::isfinite(s.weight)) s.weight = 0;
+Real FiniteOrZero(Real x) { return x > 0 && std::isfinite(x) ? x : Real(0); }
+
+// Fills the connection and the weights from the integrand's factors and the pdf; any
+// non-finite or non-positive outcome becomes "nothing to trace" (never a NaN in an image).
+template <typename Real>
+GatherSample<Real> Finish(GatherSample<Real> s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
+  s.bare_weight = FiniteOrZero(f.bare / pdf);
+  s.path_length = f.path_length;
+  s.scatterings = f.scatterings;
+  s.transmittance = std::exp(-m.sigma_t * f.connection);
+  s.weight = FiniteOrZero(s.weight_for(m));
   return s;
 }
 }  // namespace detail

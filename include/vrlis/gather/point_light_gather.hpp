@@ -16,16 +16,18 @@ SegmentQuery<Real> CameraStepQuery(const PointLightGatherQuery<Real>& q) {
 }
 
 template <typename Real>
-Real PointLightGatherIntegrand(const PointLightGatherQuery<Real>& q, Real t, Real* transmittance = nullptr) {
+IntegrandFactors<Real> PointLightGatherFactors(const PointLightGatherQuery<Real>& q, Real t) {
   Vec3<Real> x = q.camera.at(t), w = q.light - x;
   Real r2 = Dot(w, w);
-  if (!(r2 > 0)) return 0;
+  if (!(r2 > 0)) return {};
   Real r = std::sqrt(r2);
-  const Medium<Real>& m = q.medium;
-  Real connection = std::exp(-m.sigma_t * r);
-  if (transmittance) *transmittance = connection;
-  return m.sigma_s * HenyeyGreenstein(m.g, Clamp(Dot(q.camera.dir, w) / r, Real(-1), Real(1))) *
-         std::exp(-m.sigma_t * (t - q.camera.tmin)) * connection / r2;
+  Real rho = HenyeyGreenstein(q.medium.g, Clamp(Dot(q.camera.dir, w) / r, Real(-1), Real(1)));
+  return {rho / r2, (t - q.camera.tmin) + r, r, 1};
+}
+
+template <typename Real>
+Real PointLightGatherIntegrand(const PointLightGatherQuery<Real>& q, Real t, Real* transmittance = nullptr) {
+  return PointLightGatherFactors(q, t).value(q.medium, transmittance);
 }
 
 template <typename Real>
@@ -39,8 +41,7 @@ GatherSample<Real> SamplePointLightGather(SegmentChoice method, const PointLight
     s.light_point = q.light;
     s.t = t.t;
     s.pdf_t = t.pdf;
-    Real f = PointLightGatherIntegrand(q, t.t, &s.transmittance);
-    return detail::Finish(s, f, t.pdf);
+    return detail::Finish(s, PointLightGatherFactors(q, t.t), q.medium, t.pdf);
   });
 }
 

@@ -20,19 +20,21 @@ SegmentQuery<Real> VrlStepQuery(const SurfaceGatherQuery<Real>& q) {
 }
 
 template <typename Real>
-Real SurfaceGatherIntegrand(const SurfaceGatherQuery<Real>& q, Real v, Real* transmittance = nullptr) {
+IntegrandFactors<Real> SurfaceGatherFactors(const SurfaceGatherQuery<Real>& q, Real v) {
   Vec3<Real> y = q.vrl.at(v), w = y - q.point;
   Real r2 = Dot(w, w);
-  if (!(r2 > 0)) return 0;
+  if (!(r2 > 0)) return {};
   Real r = std::sqrt(r2);
   Vec3<Real> wh = (Real(1) / r) * w;
   Real cos = Dot(q.normal, wh);
-  if (!(cos > 0)) return 0;
-  const Medium<Real>& m = q.medium;
-  Real connection = std::exp(-m.sigma_t * r);
-  if (transmittance) *transmittance = connection;
-  return m.sigma_s * HenyeyGreenstein(m.g, Clamp(-Dot(q.vrl.dir, wh), Real(-1), Real(1))) * cos * kInvPi<Real> *
-         std::exp(-m.sigma_t * v) * connection / r2;
+  if (!(cos > 0)) return {};
+  Real rho = HenyeyGreenstein(q.medium.g, Clamp(-Dot(q.vrl.dir, wh), Real(-1), Real(1)));
+  return {rho * cos * kInvPi<Real> / r2, v + r, r, 1};
+}
+
+template <typename Real>
+Real SurfaceGatherIntegrand(const SurfaceGatherQuery<Real>& q, Real v, Real* transmittance = nullptr) {
+  return SurfaceGatherFactors(q, v).value(q.medium, transmittance);
 }
 
 // The gather's outcome for the VRL sample v (usable or not).
@@ -45,8 +47,7 @@ template <typename Real>
   s.light_point = q.vrl.at(v.t);
   s.v = v.t;
   s.pdf_v = v.pdf;
-  Real f = SurfaceGatherIntegrand(q, v.t, &s.transmittance);
-  return detail::Finish(s, f, v.pdf);
+  return detail::Finish(s, SurfaceGatherFactors(q, v.t), q.medium, v.pdf);
 }
 
 // One estimate with the sampler fixed at compile time, for a query the caller has validated
