@@ -137,13 +137,14 @@ Real MediumGatherBound(const RaySegment<Real>& camera, const VrlSegment<Real>& v
   return Sqr(m.sigma_s) * phases * std::exp(-m.sigma_t * Length(y0 - x0)) * InverseSquareBound(camera, vrl, c);
 }
 
-// MediumGatherBound with both phases by their largest value over all angles: looser, and
-// half its cost.
+// MediumGatherBound with both phases by their largest value over all angles and 1 / |w|^2 by
+// 1 / r^2 over both lengths or pi / r along the VRL (h(v) >= r): looser, and no inverse
+// hyperbolic sine.
 template <typename Real>
 Real MediumGatherQuickBound(const RaySegment<Real>& camera, const VrlSegment<Real>& vrl, const Medium<Real>& m) {
-  Real nearest = Length(vrl.origin - camera.at(camera.tmin));
-  return Sqr(m.sigma_s * detail::PhaseMax(m.g)) * std::exp(-m.sigma_t * nearest) *
-         InverseSquareBound(camera, vrl, Closest(camera, vrl));
+  Real nearest = Length(vrl.origin - camera.at(camera.tmin)), r = Closest(camera, vrl).r;
+  return Sqr(m.sigma_s * detail::PhaseMax(m.g)) * std::exp(-m.sigma_t * nearest) * vrl.length *
+         std::min((camera.tmax - camera.tmin) / (r * r), kPi<Real> / r);
 }
 
 // A bound of the medium-to-surface gather's mean, Int f dv (surface_gather.hpp, without the

@@ -36,8 +36,9 @@ struct GatherBatch {
 
 // The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp)
 // and quick(i) a looser, cheaper one, which decides alone where it already puts q at the floor
-// (the tighter bound would too); gather(batch, samples) samples a batch. A batch is run when full and after every kSize
-// VRLs, so that with the control off the batches are those of one gather per VRL.
+// (the tighter bound would too); gather(batch, samples) samples a batch. A batch is run when
+// full; with the control off also after every kSize VRLs, so that the batches are those of one
+// gather per VRL (with it on, the few samples roulette leaves would each pay a whole batch).
 template <int kUniforms, typename Real, typename Uniform, typename Quick, typename Predict, typename Gather,
           typename Connect>
 void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights, int count,
@@ -77,7 +78,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
       batch.source[batch.count] = i;
       batch.effort_weight[batch.count++] = weight;
     }
-    if ((i + 1) % Batch::kSize == 0 && batch.count > 0) run();
+    if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run();
   }
   if (batch.count > 0) run();
 }
