@@ -5,6 +5,7 @@
 // Russian roulette below one, splitting above, unbiased for any q > 0 (and q is never 0).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "../core/gather_query.hpp"
@@ -22,6 +23,9 @@ struct EffortSettings {
   double price = 0;
   double floor = 0.05;   // the largest roulette weight is 1 / floor (EARS's bounds)
   double ceiling = 20;   // at most this many samples of one gather
+  // With the `auto` sampler, the accurate model (FullProduct, VrlMarginal as step one) for a
+  // gather that asks for more than this many ceilings of samples (docs/maths.md#effort-models).
+  double accurate = 2.3;
 };
 
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
@@ -34,12 +38,33 @@ struct EffortTally {
   double predicted = 0;
 };
 
-// The expected number of samples of a gather whose second moment is predicted as m2. Never
-// zero: a prediction that rounds to zero must not drop a gather that is not (a bias).
-inline double EffortQ(const EffortSettings& e, double m2) {
-  if (!e.on || !(e.price > 0) || !std::isfinite(e.price) || std::isnan(m2)) return 1;
+// Whether the control has a price to decide by: on, and a positive finite price learned.
+inline bool EffortPriced(const EffortSettings& e) { return e.on && e.price > 0 && std::isfinite(e.price); }
+
+// How many samples a gather whose second moment is predicted as m2 asks for, before the
+// clamps: sqrt(price x m2) (the first-order optimum, docs/maths.md#effort); 1 unpriced.
+inline double EffortDemand(const EffortSettings& e, double m2) {
+  if (!EffortPriced(e) || std::isnan(m2)) return 1;
   double q = std::sqrt(e.price * std::max(m2, 0.0));
-  return std::isfinite(q) ? std::clamp(q, e.floor, e.ceiling) : e.ceiling;
+  return std::isfinite(q) ? q : std::numeric_limits<double>::infinity();
+}
+
+// The expected number of samples of that gather: its demand clamped to [floor, ceiling]. Never
+// zero: a prediction that rounds to zero must not drop a gather that is not (a bias).
+inline double EffortClamp(const EffortSettings& e, double demand) {
+  return EffortPriced(e) ? std::clamp(demand, e.floor, e.ceiling) : 1;
+}
+inline double EffortQ(const EffortSettings& e, double m2) { return EffortClamp(e, EffortDemand(e, m2)); }
+
+// The model a gather's demand pays for (docs/maths.md#effort-models): at the floor its
+// variance is worth less than its time, and the cheapest model wins; far above the ceiling its
+// variance outweighs its time, and the most accurate one wins; between, the per-query rule of
+// the sampler asked for.
+enum class EffortModel { Cheapest, Chosen, Accurate };
+inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
+  if (!EffortPriced(e)) return EffortModel::Chosen;
+  if (demand <= e.floor) return EffortModel::Cheapest;
+  return demand >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
 }
 
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.

@@ -15,6 +15,7 @@
 // numbers (two, or one at a surface), in order, valid or not, so images do not depend on
 // batching or validity; with it on each also draws one for its number of samples first.
 #include <algorithm>
+#include <type_traits>
 
 #include "effort.hpp"
 #include "medium_gather.hpp"
@@ -36,19 +37,21 @@ struct GatherBatch {
 
 // The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp)
 // and quick(i) a looser, cheaper one, which decides alone where it already puts q at the floor
-// (the tighter bound would too); gather(batch, samples) samples a batch. A batch is run when
-// full; with the control off also after every kSize VRLs, so that the batches are those of one
-// gather per VRL (with it on, the few samples roulette leaves would each pay a whole batch).
+// (the tighter bound would too); gather(model, batch, samples) samples a batch with the
+// EffortModel's samplers (always Chosen unless `policy`). A batch is run when full; with the
+// control off also after every kSize VRLs, so that the batches are those of one gather per
+// VRL (with it on, the few samples roulette leaves would each pay a whole batch).
 template <int kUniforms, typename Real, typename Uniform, typename Quick, typename Predict, typename Gather,
           typename Connect>
-void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights, int count,
-                   bool valid, Uniform& uniform, Quick&& quick, Predict&& predict, Gather&& gather, Connect& connect,
-                   EffortTally* tally) {
+void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<Real>* vrls, const Real* weights,
+                   int count, bool valid, Uniform& uniform, Quick&& quick, Predict&& predict, Gather&& gather,
+                   Connect& connect, EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
-  Batch batch;
-  auto run = [&] {
+  Batch batches[3];
+  auto run = [&](EffortModel model) {
+    Batch& batch = batches[static_cast<int>(model)];
     GatherSample<Real> samples[Batch::kSize];
-    gather(batch, samples);
+    gather(model, batch, samples);
     for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
     batch.count = 0;
   };
@@ -56,31 +59,36 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
     int n = 1;
     Real weight = 1;
+    EffortModel model = EffortModel::Chosen;
     if (effort.on) {
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
         if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(predict(i))) : 0;
         return m2;
       };
-      double q = EffortQ(effort, usable ? Sqr(double(weights[i]) * double(quick(i))) : 0);
-      if (q > effort.floor) q = EffortQ(effort, predicted());
+      double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick(i))) : 0);
+      if (demand > effort.floor) demand = EffortDemand(effort, predicted());
+      const double q = EffortClamp(effort, demand);
+      if (policy) model = ChooseEffortModel(effort, demand);
       n = EffortSamples(q, double(uniform()));
       weight = n > 0 ? Real(1 / q) : Real(0);
       if (tally && n > 0) tally->predicted += n * predicted() / q;
     }
+    Batch& batch = batches[static_cast<int>(model)];
     for (int j = 0; j < n; ++j) {
       Real u[kUniforms];
       for (Real& x : u) x = uniform();
       if (!usable) continue;
-      if (batch.count == Batch::kSize) run();
+      if (batch.count == Batch::kSize) run(model);
       batch.segments[batch.count] = vrls[i];
       for (int k = 0; k < kUniforms; ++k) batch.u[k][batch.count] = u[k];
       batch.source[batch.count] = i;
       batch.effort_weight[batch.count++] = weight;
     }
-    if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run();
+    if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
-  if (batch.count > 0) run();
+  for (EffortModel m : {EffortModel::Cheapest, EffortModel::Chosen, EffortModel::Accurate})
+    if (batches[static_cast<int>(m)].count > 0) run(m);
 }
 
 }  // namespace detail
@@ -96,13 +104,23 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
   WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
     using VrlSampler = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
+    constexpr bool policy = std::is_same_v<StepTwo, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<2>(
-        effort, vrls, weights, count, valid, uniform,
+        effort, policy, vrls, weights, count, valid, uniform,
         [&](int i) { return MediumGatherQuickBound(camera, vrls[i], medium); },
         [&](int i) { return MediumGatherBound(camera, vrls[i], medium); },
-        [&](const auto& b, GatherSample<Real>* samples) {
-          SampleMediumGathers<VrlSampler, StepTwo>(ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1],
-                                                samples);
+        [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
+          auto with = [&](auto one, auto two) {
+            SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
+                ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples);
+          };
+          if constexpr (policy) {
+            if (model == EffortModel::Cheapest)
+              return with(Type<VrlPointEntry::Sampler<Real>>{}, Type<EquiangularEntry::Sampler<Real>>{});
+            if (model == EffortModel::Accurate)
+              return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Type<FullProductEntry::Sampler<Real>>{});
+          }
+          with(Type<VrlSampler>{}, Type<StepTwo>{});
         },
         connect, tally);
   });
@@ -117,12 +135,21 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
   const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
   SegmentSamplers::WithEntry(method, [&](auto entry) {
     using Sampler = typename decltype(entry)::template Sampler<Real>;
+    constexpr bool policy = std::is_same_v<Sampler, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<1>(
-        effort, vrls, weights, count, valid, uniform,
+        effort, policy, vrls, weights, count, valid, uniform,
         [&](int i) { return SurfaceGatherQuickBound(point, normal, vrls[i], medium); },
         [&](int i) { return SurfaceGatherBound(point, normal, vrls[i], medium); },
-        [&](const auto& b, GatherSample<Real>* samples) {
-          SampleSurfaceGathers<Sampler>(ValidQuery{}, point, normal, medium, b.segments, b.count, b.u[0], samples);
+        [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
+          auto with = [&](auto sampler) {
+            SampleSurfaceGathers<typename decltype(sampler)::type>(ValidQuery{}, point, normal, medium, b.segments,
+                                                                   b.count, b.u[0], samples);
+          };
+          if constexpr (policy) {
+            if (model == EffortModel::Cheapest) return with(Type<EquiangularEntry::Sampler<Real>>{});
+            if (model == EffortModel::Accurate) return with(Type<FullProductEntry::Sampler<Real>>{});
+          }
+          with(Type<Sampler>{});
         },
         connect, tally);
   });
