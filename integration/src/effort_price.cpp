@@ -31,13 +31,13 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats&
 
 void EffortPrice::Refresh() {
   const double n = passes_;
-  // The mean over pixels of their variance, the largest hundredth left out.
+  // The mean over pixels of their variance, the largest thousandth left out.
   std::vector<double> pixels(sum_.size());
   for (std::size_t i = 0; i < sum_.size(); ++i) {
     double mean = sum_[i] / n;
     pixels[i] = std::max(0.0, (sum_sq_[i] - n * mean * mean) / (n - 1));
   }
-  const std::size_t kept = pixels.size() - pixels.size() / 100;
+  const std::size_t kept = pixels.size() - pixels.size() / 1000;
   std::nth_element(pixels.begin(), pixels.begin() + static_cast<std::ptrdiff_t>(kept) - 1, pixels.end());
   double variance = 0;
   for (std::size_t k = 0; k < kept; ++k) variance += pixels[k];

@@ -52,6 +52,8 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
     float weights[kChunk];
+    int samples[kChunk] = {};
+    double sum_y[kChunk] = {}, sum_y2[kChunk] = {};  // per VRL, of its samples' unweighted contributions
     for (int i = 0; i < n; ++i) {
       segments[i] = SegmentOf(chunk[i]);
       weights[i] = RmsRgb(throughput * chunk[i].flux);
@@ -61,10 +63,17 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       sum += x;
       if (!stats) return;
       ++taken.gathers;
-      double contribution = RmsRgb(throughput * x);
-      taken.measured += contribution * contribution / effort_weight;  // weight x (x / weight)^2
+      double y = RmsRgb(throughput * x) / effort_weight;
+      taken.measured += effort_weight * y * y;
+      ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     gather_chunk(segments, weights, n, connect, stats ? &tally : nullptr);
+    for (int i = 0; stats && i < n; ++i)
+      if (samples[i] > 1) {
+        double k = samples[i], mean = sum_y[i] / k;
+        taken.split_within += std::max(0.0, (sum_y2[i] - k * mean * mean) / (k - 1));
+        taken.split_second += sum_y2[i] / k;
+      }
   }
   if (stats) {
     taken.predicted = tally.predicted;

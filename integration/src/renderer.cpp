@@ -53,6 +53,8 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
   medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
   surface_effort.price = price_.price(GatherKind::Surface);
+  medium_effort.within = price_.within(GatherKind::Medium);
+  surface_effort.within = price_.within(GatherKind::Surface);
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) {
     GatherCount count;
     auto p0 = effort.on ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};

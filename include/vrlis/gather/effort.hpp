@@ -23,6 +23,10 @@ struct EffortSettings {
   double price = 0;
   double floor = 0.05;   // the largest roulette weight is 1 / floor (EARS's bounds)
   double ceiling = 20;   // at most this many samples of one gather
+  // The share of a gather's second moment that splitting reduces: its variance given the VRL
+  // and the camera segment, over its second moment (the rest is the VRL's and the path's,
+  // shared by every split sample); learned by the renderer like the price.
+  double within = 1;
   // With the `auto` sampler, the accurate model (FullProduct, VrlMarginal as step one) for a
   // gather that asks for more than this many ceilings of samples (docs/maths.md#effort-models).
   double accurate = 2.3;
@@ -51,8 +55,13 @@ inline double EffortDemand(const EffortSettings& e, double m2) {
 
 // The expected number of samples of that gather: its demand clamped to [floor, ceiling]. Never
 // zero: a prediction that rounds to zero must not drop a gather that is not (a bias).
+// Splitting (q > 1) reduces only the within share of the second moment, so above one sample
+// the demand is sqrt(within) as large (docs/maths.md#effort).
+inline double SplitDemand(const EffortSettings& e, double demand) {
+  return demand > 1 ? std::max(1.0, demand * std::sqrt(std::clamp(e.within, 0.0, 1.0))) : demand;
+}
 inline double EffortClamp(const EffortSettings& e, double demand) {
-  return EffortPriced(e) ? std::clamp(demand, e.floor, e.ceiling) : 1;
+  return EffortPriced(e) ? std::clamp(SplitDemand(e, demand), e.floor, e.ceiling) : 1;
 }
 inline double EffortQ(const EffortSettings& e, double m2) { return EffortClamp(e, EffortDemand(e, m2)); }
 
@@ -64,7 +73,7 @@ enum class EffortModel { Cheapest, Chosen, Accurate };
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
   if (!EffortPriced(e)) return EffortModel::Chosen;
   if (demand <= e.floor) return EffortModel::Cheapest;
-  return demand >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
+  return SplitDemand(e, demand) >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
 }
 
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.

@@ -1,9 +1,11 @@
 #pragma once
 // The image-level price of variance behind the effort control (docs/maths.md#effort), learned
-// from the passes already rendered: the variance of one pass's pixel estimate, per 8 x 8 tile
-// with the largest tenth of its pixels left out (a few fireflies must not flip decisions),
-// and the time a pixel and a gather cost. A pass's decisions read the price of the passes
+// from the passes already rendered: the variance of one pass's pixel estimate, averaged over
+// pixels with the largest thousandth left out (a few fireflies must not flip decisions; the
+// predicted second moments keep theirs, and more left out here overprices variance), and the
+// time a pixel and a gather cost. A pass's decisions read the price of the passes
 // before it only: the renderer adds a pass after rendering it.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -13,11 +15,15 @@ namespace vrlis::integration {
 
 // What a pass's gathers tell the price, summed over pixels: the gathers taken, their time,
 // the predicted second moments (vrlis::EffortTally) and the samples' own estimate of them.
+// Of the gathers split into several samples: the sum of their within variances and of their
+// second moments, each estimated from its own samples (the share splitting reduces).
 struct EffortStats {
   std::uint64_t gathers = 0;
   double seconds = 0, predicted = 0, measured = 0;
+  double split_within = 0, split_second = 0;
   void operator+=(const EffortStats& o) {
     gathers += o.gathers, seconds += o.seconds, predicted += o.predicted, measured += o.measured;
+    split_within += o.split_within, split_second += o.split_second;
   }
 };
 
@@ -26,7 +32,6 @@ enum class GatherKind { Medium, Surface };
 
 class EffortPrice {
  public:
-  static constexpr int kTile = 8;
   static constexpr int kMinPasses = 2;  // a variance needs two passes
 
   EffortPrice() = default;
@@ -38,6 +43,12 @@ class EffortPrice {
   // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
   // gather taken once).
   double price(GatherKind kind) const { return price_[static_cast<int>(kind)]; }
+  // The within share of the split gathers' second moments (vrlis::EffortSettings::within); 1
+  // before any gather was split.
+  double within(GatherKind kind) const {
+    const EffortStats& g = gathers_[static_cast<int>(kind)];
+    return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;
+  }
   int passes() const { return passes_; }
 
  private:
