@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""The effort control's tables, from two runs of `vrl_compare --with-effort` (two seeds).
+"""The effort control's tables, from runs of `vrl_compare --with-effort` (tools/effort.sh).
 
 Per run and study: the best fixed published sampler at fixed effort (equiangular, Novák,
 CauchySum, CauchyMixture: every gather taken once), and against it, with a 95% interval,
 each of our own methods and every method with the effort control on (NAME+effort); the
 error against the reference over the noise (about 1 when unbiased) of every method.
 
-    effort.py RUN1 RUN2 [--publish FILE] [--command CMD]"""
+    effort.py RUN... [--publish FILE] [--command CMD]"""
 import argparse
 import math
 import os
@@ -66,8 +66,9 @@ def tables(runs):
     rule = "|---|---|---|" + "---|" * len(names)
     rows, errors, medians = [header, rule], [], {n: [] for n in names}
     worst_error = 0
-    for seed, run in enumerate(runs, 1):
+    for run in runs:
         for r in run:
+            seed = r["seed"]
             s, best = by_name(r), best_published(r)
             cells = []
             for n in names:
@@ -93,7 +94,7 @@ def tables(runs):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs=2)
+    ap.add_argument("runs", nargs="+")
     ap.add_argument("--publish")
     ap.add_argument("--command", default="tools/effort.sh")
     a = ap.parse_args()
@@ -104,10 +105,12 @@ def main():
         "",
         provenance(a.command),
         "",
-        "Every method of the default study (bidirectional scene and room, g in {-0.9, 0.5, 0.9}), each "
-        "also with the effort control on (`NAME+effort`: Russian roulette and splitting of every VRL "
-        "gather by a price of variance learned from earlier passes, [../maths.md](../maths.md#effort)), "
-        "in two runs with seeds 1 and 2. Each cell is the method's efficiency over that study's best "
+        "Every method of the equal-time study, each also with the effort control on (`NAME+effort`: "
+        "Russian roulette and splitting of every VRL gather by a price of variance learned from earlier "
+        "passes, [../maths.md](../maths.md#effort); `auto+effort` also chooses both steps' models by it, "
+        "[../maths.md](../maths.md#effort-models)): the default study (bidirectional scene and room, "
+        "g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, and cube and corner at g in {-0.9, 0.5} with seed 1. "
+        "Each cell is the method's efficiency over that study's best "
         "fixed published sampler (equiangular, Novák, CauchySum, CauchyMixture, every gather taken once) "
         "with its 95% interval; **bold**: the interval lies below 1.",
         "",

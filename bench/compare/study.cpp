@@ -50,7 +50,9 @@ struct Runner {
   std::vector<Progression> progression;
   std::vector<vrlis::integration::EffortPrice> prices;  // per replicate, with the effort control on
 
-  Replicates Summary(int per_replicate) const {
+  int per_replicate = 0;  // passes in each replicate
+
+  Replicates Summary() const {
     Replicates r;
     for (std::size_t rep = 0; rep < replicates.size(); ++rep) {
       r.variance.push_back(replicates[rep].MeanPassVariance());
@@ -65,9 +67,9 @@ struct Runner {
 // extension) until the interval lies wholly above the margin ("best") or wholly below it
 // ("tie"), so that a lead near the threshold is not called "best" by one run and "tie" by
 // the next.
-bool Undecided(const std::vector<Runner>& runners, int per_replicate, double margin) {
+bool Undecided(const std::vector<Runner>& runners, double margin) {
   std::vector<Replicates> r;
-  for (const Runner& run : runners) r.push_back(run.Summary(per_replicate));
+  for (const Runner& run : runners) r.push_back(run.Summary());
   std::sort(r.begin(), r.end(), [](const Replicates& a, const Replicates& b) { return Efficiency(a) > Efficiency(b); });
   RatioInterval lead = EfficiencyRatio(r[0], r[1]);
   return lead.low <= margin && lead.high > margin;
@@ -119,22 +121,29 @@ StudyResult RunStudy(const StudyConfig& config) {
                        std::vector<vrlis::integration::EffortPrice>(
                            replicates, vrlis::integration::EffortPrice(config.width, config.height))});
 
-  // Whole cycles (one pass of every replicate) so that all replicates hold the same number
-  // of passes; at least two, for a variance within each.
-  int per_replicate = 0;
+  // Whole cycles (one pass of every replicate) so that all replicates of a sampler hold the
+  // same number of passes, at least two, for a variance within each. A sampler stops once it
+  // has spent its budget (or, while the study is undecided, the extended one): the others'
+  // passes go on, so a sampler 20x faster than another does not keep the slow one rendering.
   std::size_t round = 0;
   auto spent = [&](const Runner& r) { return std::accumulate(r.seconds.begin(), r.seconds.end(), 0.0); };
-  auto below = [&](double seconds) {
-    return std::any_of(runners.begin(), runners.end(), [&](const Runner& r) { return spent(r) < seconds; });
+  auto target = [&] {
+    const bool short_of_budget = std::any_of(runners.begin(), runners.end(), [&](const Runner& r) {
+      return r.per_replicate < 2 || spent(r) < config.budget;
+    });
+    return !short_of_budget && Undecided(runners, config.margin) ? config.extension * config.budget : config.budget;
   };
-  while (per_replicate < 2 || below(config.budget) ||
-         (below(config.extension * config.budget) && Undecided(runners, per_replicate, config.margin))) {
+  auto wants = [&](const Runner& r, double seconds) { return r.per_replicate < 2 || spent(r) < seconds; };
+  for (double goal = config.budget;
+       std::any_of(runners.begin(), runners.end(), [&](const Runner& r) { return wants(r, goal); });
+       goal = target()) {
     for (std::size_t rep = 0; rep < replicates; ++rep, ++round)
       for (std::size_t k = 0; k < runners.size(); ++k) {
         Runner& run = runners[(k + round) % runners.size()];
+        if (!wants(run, goal)) continue;
         double seconds = 0;
         std::vector<double> pass =
-            FromFilm(renderer.Render(run.sampler, seeds[rep], static_cast<std::uint64_t>(per_replicate), &seconds,
+            FromFilm(renderer.Render(run.sampler, seeds[rep], static_cast<std::uint64_t>(run.per_replicate), &seconds,
                                      &run.prices[rep]));
         run.seconds[rep] += seconds;
         run.replicates[rep].Add(pass);
@@ -142,12 +151,13 @@ StudyResult RunStudy(const StudyConfig& config) {
         run.progression[rep].seconds.push_back(run.seconds[rep]);
         run.progression[rep].rmse.push_back(Rmse(run.replicates[rep].Mean(), reference.mean));
       }
-    ++per_replicate;
+    for (Runner& run : runners)
+      if (run.replicates[0].passes() > run.per_replicate) run.per_replicate = run.replicates[0].passes();
   }
 
   StudyResult out;
   out.config = config;
-  out.passes_per_replicate = per_replicate;
+  for (const Runner& run : runners) out.passes_per_replicate = std::max(out.passes_per_replicate, run.per_replicate);
   out.reference_passes = reference.passes;
   out.reference_seconds = reference.seconds;
   out.reference_cached = reference.from_cache;
@@ -156,7 +166,7 @@ StudyResult RunStudy(const StudyConfig& config) {
     SamplerResult s;
     s.sampler = run.sampler;
     s.passes = run.all.passes();
-    s.replicates = run.Summary(per_replicate);
+    s.replicates = run.Summary();
     s.variance = PooledVariance(s.replicates);
     s.seconds = PooledSeconds(s.replicates);
     s.efficiency = Efficiency(s.replicates);
