@@ -93,12 +93,12 @@ double Rmse(const vrlis::integration::Film& a, const vrlis::integration::Film& b
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scene_name, sampler = "cauchy-sum", integrator = "vrl", gather = "all", out = "render.exr", reference;
+  std::string scene_name, sampler = "auto", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
-  std::string dump_queries, effort = "off";
+  std::string dump_queries, effort = "on";
   bool no_jitter = false, no_caustics = false, quiet = false, json = false;
 
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
@@ -119,7 +119,8 @@ int main(int argc, char** argv) {
   app.add_option("--time", seconds, "Render for this many seconds instead of --spp passes")->excludes(spp_opt);
   app.add_option("--vrls", vrls, "Light paths per pass")->capture_default_str();
   app.add_option("--effort", effort, "on: Russian roulette and splitting of every VRL gather by a price of variance "
-                                     "learned from earlier passes (docs/maths.md#effort); off: every VRL gathered once")
+                                     "learned from earlier passes, and with auto both steps' models by it "
+                                     "(docs/maths.md#effort); off: every VRL gathered once, images reproducible")
       ->capture_default_str();
   app.add_option("--seed", seed, "Random seed: the same seed gives the same image at any thread count")
       ->capture_default_str();

@@ -28,7 +28,7 @@ for scene in bidirectional room cube corner; do
   [ "$scene" = cube ] && size=128  # the medium cube covers a small part of the image
   for g in $gs; do
     name="${scene}_g${g}"
-    common=(--scene "$scene" --g "$g" --gather m2m --width "$size" --height "$size" --spp 4 --vrls 64 --seed 1 --quiet
+    common=(--scene "$scene" --g "$g" --gather m2m --sampler cauchy-sum --effort off --width "$size" --height "$size" --spp 4 --vrls 64 --seed 1 --quiet
             --out "$out/$name.exr")
     "$render" "${common[@]}" >/dev/null
     gathers=$(/usr/bin/python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['gathers'])" "$out/$name.json")

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, and runs the equal-time study of every
-# camera sampler (default: the bidirectional scene and the room, g in {-0.9, 0.5, 0.9}: 6 studies
-# x 6 samplers x at least 8 s, 8-10 minutes on a shared 2-core machine); prints the table with
+# camera sampler and FullProduct with VrlMarginal as step one (default: the bidirectional scene
+# and the room, g in {-0.9, 0.5, 0.9}: 6 studies x 7 samplers x at least 8 s, about 11 minutes
+# on a shared 2-core machine; the effort control's study is tools/effort.sh); prints the table with
 # 95% intervals and what each study could resolve, and writes charts under out/compare.
 #   tools/main.sh            the default study
 #   tools/main.sh --full     every scene, g in {-0.9, -0.5, 0, 0.5, 0.9}, 12 s per sampler (~30 min)

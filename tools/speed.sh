@@ -77,10 +77,12 @@ for rep in $(seq "$reps"); do
           dir=$([ "$build" = base ] && echo "$base" || echo "$new")
           stem="$out/runs/${scene}_${sampler}_${threads}_${build}_$rep"
           run=("$dir/examples/vrl_render")
+          once=()  # every gather taken once, where the build has the effort control
+          "$dir/examples/vrl_render" --help | grep -q -- --effort && once=(--effort off)
           [ "$threads" != 1 ] || run=("${pin[@]}" "${run[@]}")
           [ "$threads" != 1b ] || run=("${other[@]}" "${run[@]}")
           "${run[@]}" --scene "$scene" --sampler "$sampler" --threads "${threads%b}" --width "$size" \
-            --height "$size" --spp "$spp" --quiet --out "$stem" >/dev/null 2>&1 || true  # absent: not compared
+            --height "$size" --spp "$spp" "${once[@]}" --quiet --out "$stem" >/dev/null 2>&1 || true  # absent: not compared
         done
       done
     done
@@ -97,7 +99,7 @@ if command -v perf >/dev/null; then
   for run in $profiled; do
     set -- ${run/:/ }
     echo "== perf profile of vrl_render ($1, $2, 1 thread)"
-    perf record -q -o "$out/runs/perf_$1.data" "$new/examples/vrl_render" --scene "$1" --sampler "$2" --threads 1 \
+    perf record -q -o "$out/runs/perf_$1.data" "$new/examples/vrl_render" --scene "$1" --sampler "$2" --effort off --threads 1 \
       --width "$size" --height "$size" --spp "$((4 * spp))" --quiet --out "$out/runs/perf_$1" >/dev/null 2>&1 || true
     { perf report -q -i "$out/runs/perf_$1.data" --no-children --sort dso --stdio 2>/dev/null | grep -E '^ +[0-9]' | head -4
       echo
@@ -108,7 +110,7 @@ fi
 
 echo "== vrlis_bench SceneCamera/*: the camera step on each scene's own queries (this tree)"
 for scene in $scenes; do
-  "$new/examples/vrl_render" --scene "$scene" --sampler "$baseline" --threads 1 --width "$size" --height "$size" --spp "$spp" \
+  "$new/examples/vrl_render" --scene "$scene" --sampler "$baseline" --effort off --threads 1 --width "$size" --height "$size" --spp "$spp" \
     --quiet --dump-queries "$out/runs/$scene.qlog" --dump-every 20 --out "$out/runs/${scene}_queries" >/dev/null
   "${pin[@]}" "$new/bench/vrlis_bench" --vrlis_queries="$out/runs/$scene.qlog" --benchmark_filter='^SceneCamera/' \
     --benchmark_min_time=0.1 --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \

@@ -6,7 +6,9 @@ CauchySum, CauchyMixture: every gather taken once), and against it, with a 95% i
 each of our own methods and every method with the effort control on (NAME+effort); the
 error against the reference over the noise (about 1 when unbiased) of every method.
 
-    effort.py RUN... [--publish FILE] [--command CMD]"""
+    effort.py RUN... [--publish FILE] [--command CMD]
+
+With --publish, also the README's sentence between its effort-summary markers."""
 import argparse
 import math
 import os
@@ -14,7 +16,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot import load, provenance  # noqa: E402
+from plot import load, provenance, update_readme  # noqa: E402
 from thesis import t975  # noqa: E402
 
 PUBLISHED = ["equiangular", "novak", "cauchy-sum", "cauchy-mixture"]
@@ -60,7 +62,10 @@ def best_published(result):
 
 def tables(runs):
     """(against-best table, error table, summary lines)"""
-    names = [s["sampler"] for s in runs[0][0]["samplers"]]
+    names = []
+    for run in runs:
+        for r in run:
+            names += [s["sampler"] for s in r["samplers"] if s["sampler"] not in names]
     fixed = [n for n in names if not n.endswith(SUFFIX)]
     header = "| study | seed | best fixed published | " + " | ".join(f"`{n}`" for n in names) + " |"
     rule = "|---|---|---|" + "---|" * len(names)
@@ -72,24 +77,42 @@ def tables(runs):
             s, best = by_name(r), best_published(r)
             cells = []
             for n in names:
+                if n not in s:
+                    cells.append("")
+                    continue
                 x = ratio(s[n], s[best])
                 medians[n].append(x[0])
                 cells.append(("**" if x[2] < 1 else "") + cell(x) + ("**" if x[2] < 1 else ""))
                 worst_error = max(worst_error, s[n]["error_to_noise"])
             rows.append(f"| {r['scene']} g = {round(r['g'], 4)} | {seed} | `{best}` | " + " | ".join(cells) + " |")
             errors.append(f"| {r['scene']} g = {round(r['g'], 4)} | {seed} | " +
-                          " | ".join(f"{s[n]['error_to_noise']:.2f}" for n in names) + " |")
+                          " | ".join(f"{s[n]['error_to_noise']:.2f}" if n in s else "" for n in names) + " |")
     error_table = ["| study | seed | " + " | ".join(f"`{n}`" for n in names) + " |", "|---|---|" + "---|" * len(names)]
     summary = []
     for n in names:
-        below = sum(1 for run in runs for r in run if ratio(by_name(r)[n], by_name(r)[best_published(r)])[2] < 1)
+        below = sum(1 for run in runs for r in run
+                    if n in by_name(r) and ratio(by_name(r)[n], by_name(r)[best_published(r)])[2] < 1)
         summary.append(f"| `{n}` | {statistics.median(medians[n]):.2f} | {below} of {len(medians[n])} |")
     gains = []
     for n in fixed:
         if n + SUFFIX in names:
-            g = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run]
+            g = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run
+                 if n in by_name(r) and n + SUFFIX in by_name(r)]
+            if not g:
+                continue
             gains.append(f"| `{n}` | {statistics.median(g):.2f} | {min(g):.2f}-{max(g):.2f} |")
-    return rows, error_table + errors, summary, gains, worst_error
+    auto = "auto" + SUFFIX
+    auto_cells = medians.get(auto, [])
+    auto_below = sum(1 for run in runs for r in run if auto in by_name(r) and
+                     ratio(by_name(r)[auto], by_name(r)[best_published(r)])[2] < 1)
+    own_gain = [ratio(by_name(r)[auto], by_name(r)["auto"])[0] for run in runs for r in run
+                if auto in by_name(r) and "auto" in by_name(r)]
+    sentence = (f"`auto` with the effort control (`vrl_render`'s default) against the best fixed published sampler "
+                f"of each study at equal time: median {statistics.median(auto_cells):.2f} over {len(auto_cells)} "
+                f"cells (range {min(auto_cells):.2f}-{max(auto_cells):.2f}), its 95% interval below 1 in {auto_below}; "
+                f"the control alone gives `auto` a median {statistics.median(own_gain):.2f} "
+                "([docs/compare/effort.md](docs/compare/effort.md)).\n") if auto_cells and own_gain else ""
+    return rows, error_table + errors, summary, gains, worst_error, sentence
 
 
 def main():
@@ -99,7 +122,7 @@ def main():
     ap.add_argument("--command", default="tools/effort.sh")
     a = ap.parse_args()
     runs = [studies(r) for r in a.runs]
-    rows, errors, summary, gains, worst = tables(runs)
+    rows, errors, summary, gains, worst, sentence = tables(runs)
     page = "\n".join([
         "# The effort control against the best fixed sampler",
         "",
@@ -138,6 +161,7 @@ def main():
         with open(a.publish + ".tmp", "w") as f:
             f.write(page)
         os.replace(a.publish + ".tmp", a.publish)
+        update_readme(provenance(a.command), sentence, marker="effort-summary")
 
 
 if __name__ == "__main__":
