@@ -65,14 +65,15 @@ inline double EffortClamp(const EffortSettings& e, double demand) {
 }
 inline double EffortQ(const EffortSettings& e, double m2) { return EffortClamp(e, EffortDemand(e, m2)); }
 
-// The model a gather's demand pays for (docs/maths.md#effort-models): far above the ceiling
-// its variance outweighs its time, and the most accurate model wins; elsewhere the per-query
-// rule of the sampler asked for (at the floor too: the demand comes from a bound that does not
-// know the model, and a cheaper model's larger variance then costs more than its time saves).
-enum class EffortModel { Chosen, Accurate };
+// The model a gather's demand pays for (docs/maths.md#effort-models): at the floor its
+// variance is worth less than its time, and the cheapest model wins; far above the ceiling its
+// variance outweighs its time, and the most accurate one wins; between, the per-query rule of
+// the sampler asked for.
+enum class EffortModel { Cheapest, Chosen, Accurate };
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
-  return EffortPriced(e) && SplitDemand(e, demand) >= e.accurate * e.ceiling ? EffortModel::Accurate
-                                                                             : EffortModel::Chosen;
+  if (!EffortPriced(e)) return EffortModel::Chosen;
+  if (demand <= e.floor) return EffortModel::Cheapest;
+  return SplitDemand(e, demand) >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
 }
 
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.

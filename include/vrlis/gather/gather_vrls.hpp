@@ -47,7 +47,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
                    int count, bool valid, Uniform& uniform, Quick&& quick, Predict&& predict, Gather&& gather,
                    Connect& connect, EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
-  Batch batches[2];
+  Batch batches[3];
   auto run = [&](EffortModel model) {
     Batch& batch = batches[static_cast<int>(model)];
     GatherSample<Real> samples[Batch::kSize];
@@ -87,7 +87,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     }
     if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
-  for (EffortModel m : {EffortModel::Chosen, EffortModel::Accurate})
+  for (EffortModel m : {EffortModel::Cheapest, EffortModel::Chosen, EffortModel::Accurate})
     if (batches[static_cast<int>(m)].count > 0) run(m);
 }
 
@@ -114,9 +114,12 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
             SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
                 ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples);
           };
-          if constexpr (policy)
+          if constexpr (policy) {
+            if (model == EffortModel::Cheapest)
+              return with(Type<VrlPointEntry::Sampler<Real>>{}, Type<EquiangularEntry::Sampler<Real>>{});
             if (model == EffortModel::Accurate)
               return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Type<FullProductEntry::Sampler<Real>>{});
+          }
           with(Type<VrlSampler>{}, Type<StepTwo>{});
         },
         connect, tally);
@@ -142,8 +145,10 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
             SampleSurfaceGathers<typename decltype(sampler)::type>(ValidQuery{}, point, normal, medium, b.segments,
                                                                    b.count, b.u[0], samples);
           };
-          if constexpr (policy)
+          if constexpr (policy) {
+            if (model == EffortModel::Cheapest) return with(Type<EquiangularEntry::Sampler<Real>>{});
             if (model == EffortModel::Accurate) return with(Type<FullProductEntry::Sampler<Real>>{});
+          }
           with(Type<Sampler>{});
         },
         connect, tally);
