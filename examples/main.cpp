@@ -93,7 +93,7 @@ double Rmse(const vrlis::integration::Film& a, const vrlis::integration::Film& b
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scene_name, sampler = "auto", integrator = "vrl", gather = "all", out = "render.exr", reference;
+  std::string scene_name, sampler = "cauchy-sum", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;

@@ -101,17 +101,18 @@ def tables(runs):
             if not g:
                 continue
             gains.append(f"| `{n}` | {statistics.median(g):.2f} | {min(g):.2f}-{max(g):.2f} |")
+    cells = {n: v for n, v in medians.items() if v}
+    ranked = sorted((n for n in cells if n.endswith(SUFFIX)), key=lambda n: -statistics.median(cells[n]))
+    all_gains = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run for n in fixed
+                 if n in by_name(r) and n + SUFFIX in by_name(r)]
     auto = "auto" + SUFFIX
-    auto_cells = medians.get(auto, [])
-    auto_below = sum(1 for run in runs for r in run if auto in by_name(r) and
-                     ratio(by_name(r)[auto], by_name(r)[best_published(r)])[2] < 1)
-    own_gain = [ratio(by_name(r)[auto], by_name(r)["auto"])[0] for run in runs for r in run
-                if auto in by_name(r) and "auto" in by_name(r)]
-    sentence = (f"`auto` with the effort control (`vrl_render`'s default) against the best fixed published sampler "
-                f"of each study at equal time: median {statistics.median(auto_cells):.2f} over {len(auto_cells)} "
-                f"cells (range {min(auto_cells):.2f}-{max(auto_cells):.2f}), its 95% interval below 1 in {auto_below}; "
-                f"the control alone gives `auto` a median {statistics.median(own_gain):.2f} "
-                "([docs/compare/effort.md](docs/compare/effort.md)).\n") if auto_cells and own_gain else ""
+    sentence = ""
+    if ranked and all_gains:
+        best = ", ".join(f"`{n}` {statistics.median(cells[n]):.2f}" for n in ranked[:3])
+        sentence = (f"Against each study's best fixed published sampler, median over {len(cells[ranked[0]])} cells: "
+                    f"{best}" + (f"; `{auto}` {statistics.median(cells[auto]):.2f}" if auto in cells and auto not in ranked[:3] else "") +
+                    f". The control alone, each method over itself without it: median {statistics.median(all_gains):.2f} "
+                    f"(range {min(all_gains):.2f}-{max(all_gains):.2f}; [docs/compare/effort.md](docs/compare/effort.md)).\n")
     return rows, error_table + errors, summary, gains, worst_error, sentence
 
 
