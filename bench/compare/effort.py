@@ -17,10 +17,15 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot import load, provenance, update_readme  # noqa: E402
+import samplers  # noqa: E402  (tools/samplers.py, on the path through plot)
 from thesis import t975  # noqa: E402
 
-PUBLISHED = ["equiangular", "novak", "cauchy-sum", "cauchy-mixture"]
 SUFFIX = "+effort"
+
+
+def published():
+    """The published methods the registry lists (not ours, no policy), every gather taken once."""
+    return [e["name"] for e in samplers.registry()["segment"] if not e["own"] and not e["policy"]]
 
 
 def ratio(a, b):
@@ -57,7 +62,7 @@ def by_name(result):
 
 def best_published(result):
     s = by_name(result)
-    return max((n for n in PUBLISHED if n in s), key=lambda n: s[n]["efficiency"])
+    return max((n for n in published() if n in s), key=lambda n: s[n]["efficiency"])
 
 
 def tables(runs):
@@ -105,12 +110,13 @@ def tables(runs):
     ranked = sorted((n for n in cells if n.endswith(SUFFIX)), key=lambda n: -statistics.median(cells[n]))
     all_gains = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run for n in fixed
                  if n in by_name(r) and n + SUFFIX in by_name(r)]
-    auto = "auto" + SUFFIX
+    policies = [n + SUFFIX for n in samplers.policies()]
     sentence = ""
     if ranked and all_gains:
         best = ", ".join(f"`{n}` {statistics.median(cells[n]):.2f}" for n in ranked[:3])
         sentence = (f"Against each study's best fixed published sampler, median over {len(cells[ranked[0]])} cells: "
-                    f"{best}" + (f"; `{auto}` {statistics.median(cells[auto]):.2f}" if auto in cells and auto not in ranked[:3] else "") +
+                    f"{best}" + "".join(f"; `{n}` {statistics.median(cells[n]):.2f}" for n in policies
+                                        if n in cells and n not in ranked[:3]) +
                     f". The control alone, each method over itself without it: median {statistics.median(all_gains):.2f} "
                     f"(range {min(all_gains):.2f}-{max(all_gains):.2f}; [docs/compare/effort.md](docs/compare/effort.md)).\n")
     return rows, error_table + errors, summary, gains, worst_error, sentence

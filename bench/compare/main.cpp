@@ -108,11 +108,13 @@ std::string SummaryTable(const std::vector<StudyResult>& results) {
 
 // What the run could tell apart, in words.
 std::string Resolution(const StudyResult& r) {
+  auto [fewest, most] = std::minmax_element(r.samplers.begin(), r.samplers.end(),
+                                            [](const auto& a, const auto& b) { return a.passes < b.passes; });
   char s[512];
   std::snprintf(s, sizeof s,
-                "%s: %d passes per sampler (%d replicates of %d); efficiency ratios resolved to x%.2f "
-                "(median 95%% half-width); %s, most efficient over the next %s%s\n",
-                StudyName(r.config).c_str(), r.samplers.front().passes, r.config.replicates, r.passes_per_replicate,
+                "%s: %d to %d passes per sampler (in %d replicates; each stops at its budget); efficiency ratios "
+                "resolved to x%.2f (median 95%% half-width); %s, most efficient over the next %s%s\n",
+                StudyName(r.config).c_str(), fewest->passes, most->passes, r.config.replicates,
                 r.resolution, r.verdict.c_str(), Interval(r.top_vs_runner_up).c_str(),
                 r.top_vs_runner_up.low <= r.config.margin && r.top_vs_runner_up.high > r.config.margin
                     ? " (undecided: the interval still holds the margin at the extended budget)"

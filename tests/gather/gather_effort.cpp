@@ -122,6 +122,15 @@ TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][ef
     CHECK(q >= previous);
     previous = q;
   }
+  // Splitting reduces only the within share: above one sample the demand shrinks by
+  // sqrt(within), never below one; roulette keeps the whole second moment.
+  e.price = 1;
+  e.within = 0.25;
+  CHECK(vrlis::EffortQ(e, 64.0) == Approx(4));
+  CHECK(vrlis::EffortQ(e, 2.25) == 1);
+  CHECK(vrlis::EffortQ(e, 0.25) == Approx(0.5));
+  e.within = 1;
+  CHECK(vrlis::EffortQ(e, 64.0) == Approx(8));
   // Stochastic rounding: q samples on average.
   int total = 0;
   for (int k = 0; k < 1000; ++k) total += vrlis::EffortSamples(2.3, (k + 0.5) / 1000);

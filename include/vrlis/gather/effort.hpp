@@ -53,13 +53,15 @@ inline double EffortDemand(const EffortSettings& e, double m2) {
   return std::isfinite(q) ? q : std::numeric_limits<double>::infinity();
 }
 
-// The expected number of samples of that gather: its demand clamped to [floor, ceiling]. Never
-// zero: a prediction that rounds to zero must not drop a gather that is not (a bias).
 // Splitting (q > 1) reduces only the within share of the second moment, so above one sample
 // the demand is sqrt(within) as large (docs/maths.md#effort).
 inline double SplitDemand(const EffortSettings& e, double demand) {
   return demand > 1 ? std::max(1.0, demand * std::sqrt(std::clamp(e.within, 0.0, 1.0))) : demand;
 }
+
+// The expected number of samples of a gather: its demand, split-scaled, clamped to [floor,
+// ceiling]; of one whose second moment is predicted as m2. Never zero: a prediction that
+// rounds to zero must not drop a gather that is not (a bias).
 inline double EffortClamp(const EffortSettings& e, double demand) {
   return EffortPriced(e) ? std::clamp(SplitDemand(e, demand), e.floor, e.ceiling) : 1;
 }
