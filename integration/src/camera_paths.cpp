@@ -26,6 +26,16 @@ class Timer {
   std::chrono::steady_clock::time_point start_;
 };
 
+// One call of a gather: its rate and its contribution to the pixel squared, weighted by the
+// rate (an estimate of the call's second moment had it been taken, docs/maths.md#effort-calls).
+void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortStats* stats) {
+  const double rate = vrlis::EffortCallRate(effort);
+  const double c = contribution.r, g = contribution.g, b = contribution.b;
+  stats->calls += 1;
+  stats->call_rate += rate;
+  stats->call_m2 += rate * (c * c + g * g + b * b) / 3;
+}
+
 }  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
@@ -44,9 +54,14 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         const vrlis::EffortSettings& effort = medium_effort;
         EffortStats& stats = count->medium_effort;
         const std::uint64_t before = stats.gathers;
-        Timer timer(effort.on, &stats.seconds);
-        L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
-                                         effort.on ? &stats : nullptr);
+        Spectrum gathered;
+        {
+          Timer timer(effort.on, &stats.seconds);
+          gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
+                                                 effort.on ? &stats : nullptr);
+        }
+        if (effort.on) AddCall(effort, gathered, &stats);
+        L += gathered;
         count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
@@ -77,9 +92,14 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       const vrlis::EffortSettings& effort = surface_effort;
       EffortStats& stats = count->surface_effort;
       const std::uint64_t before = stats.gathers;
-      Timer timer(effort.on, &stats.seconds);
-      L += beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta, effort,
-                                        effort.on ? &stats : nullptr);
+      Spectrum gathered;
+      {
+        Timer timer(effort.on, &stats.seconds);
+        gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
+                                                effort, effort.on ? &stats : nullptr);
+      }
+      if (effort.on) AddCall(effort, gathered, &stats);
+      L += gathered;
       count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);

@@ -8,50 +8,96 @@ namespace vrlis::integration {
 EffortPrice::EffortPrice(int width, int height)
     : width_(width),
       height_(height),
-      sum_(static_cast<std::size_t>(width) * height),
-      sum_sq_(sum_.size()) {}
+      pixels_(static_cast<std::size_t>(width) * height),
+      tiles_x_((width + kTile - 1) / kTile) {
+  for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_);
+  const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * ((height + kTile - 1) / kTile);
+  for (auto& kind : tiles_) kind.resize(tiles);
+}
 
-void EffortPrice::Add(const Film& pass, double pixel_seconds, const EffortStats& medium, const EffortStats& surface) {
-  for (std::size_t i = 0; i < sum_.size(); ++i) {
+void EffortPrice::Add(const Film& pass, double pixel_seconds, const std::vector<EffortStats>& medium,
+                      const std::vector<EffortStats>& surface) {
+  const std::vector<EffortStats>* stats[2] = {&medium, &surface};
+  EffortStats total[2];
+  for (int kind = 0; kind < 2; ++kind)
+    for (std::size_t i = 0; i < pixels_; ++i) {
+      const EffortStats& p = (*stats[kind])[i];
+      total[kind] += p;
+      tiles_[kind][Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += p;
+    }
+  Passes& into = passes_of_[passes_ >= kMinPasses];
+  for (std::size_t i = 0; i < pixels_; ++i) {
     const Spectrum& s = pass.pixels[i];
     double v = std::sqrt((double(s.r) * s.r + double(s.g) * s.g + double(s.b) * s.b) / 3);
     if (!std::isfinite(v)) continue;
-    sum_[i] += v;
-    sum_sq_[i] += v * v;
+    into.sum[i] += v;
+    into.sum_sq[i] += v * v;
   }
-  pixel_seconds_ += pixel_seconds;
-  const EffortStats* stats[2] = {&medium, &surface};
+  into.pixel_seconds += pixel_seconds;
+  ++into.count;
   for (int kind = 0; kind < 2; ++kind) {
-    gathers_[kind] += *stats[kind];
-    if (price_[kind] == 0) uncontrolled_[kind] += *stats[kind];  // this pass took every gather once
+    gathers_[kind] += total[kind];
+    (price_[kind] > 0 ? controlled_ : uncontrolled_)[kind] += total[kind];
   }
   ++passes_;
   if (passes_ >= kMinPasses) Refresh();
 }
 
 void EffortPrice::Refresh() {
-  const double n = passes_;
-  // The mean over pixels of their variance, the largest thousandth left out.
-  std::vector<double> pixels(sum_.size());
-  for (std::size_t i = 0; i < sum_.size(); ++i) {
-    double mean = sum_[i] / n;
-    pixels[i] = std::max(0.0, (sum_sq_[i] - n * mean * mean) / (n - 1));
+  // The variance and cost of the estimator the decisions made: the controlled passes' once
+  // there are two (the first pass's would stay in the sums long after).
+  const Passes& p = passes_of_[1].count >= 2 ? passes_of_[1] : passes_of_[0];
+  const double n = p.count;
+  std::vector<double> pixels(pixels_);
+  if (n >= 2) {
+    for (std::size_t i = 0; i < pixels_; ++i) {  // each pixel's variance over the passes
+      double mean = p.sum[i] / n;
+      pixels[i] = std::max(0.0, (p.sum_sq[i] - n * mean * mean) / (n - 1));
+    }
+  } else {  // one pass: half the squared difference of horizontal neighbours (edges overstate it)
+    pixels.clear();
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x + 1 < width_; x += 2) {
+        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+        const double d = p.sum[i] - p.sum[i + 1];
+        pixels.push_back(d * d / 2);
+      }
+    if (pixels.empty()) return;
   }
+  // The mean over pixels of their variance, the largest thousandth left out.
   const std::size_t kept = pixels.size() - pixels.size() / 1000;
   std::nth_element(pixels.begin(), pixels.begin() + static_cast<std::ptrdiff_t>(kept) - 1, pixels.end());
   double variance = 0;
   for (std::size_t k = 0; k < kept; ++k) variance += pixels[k];
   variance /= double(kept);
-  const double pixel_cost = pixel_seconds_ / (n * double(sum_.size()));
+  const double pixel_cost = p.pixel_seconds / (n * double(pixels_));
+  value_of_time_ = variance > 0 ? pixel_cost / variance : 0;
   for (int kind = 0; kind < 2; ++kind) {
     const EffortStats& g = gathers_[kind];
     const EffortStats& u = uncontrolled_[kind];
-    const double gather_cost = u.gathers > 0 ? u.seconds / double(u.gathers) : 0;
+    const EffortStats& c = controlled_[kind];
+    // One gather's cost, its decision's included, from the passes that took every gather once
+    // (the controlled passes charge the decisions of the gathers not taken to those taken, a
+    // feedback), scaled to the models the controlled passes chose by their sampling seconds.
+    auto sampling = [](const EffortStats& s) { return s.gathers > 0 ? s.sample_seconds / double(s.gathers) : 0.0; };
+    const double models = sampling(c) > 0 && sampling(u) > 0 ? sampling(c) / sampling(u) : 1;
+    const double gather_cost = u.gathers > 0 ? models * u.seconds / double(u.gathers) : 0;
     const double calibration = g.predicted > 0 ? g.measured / g.predicted : 0;
     price_[kind] = variance > 0 && gather_cost > 0 && calibration > 0
                        ? calibration * pixel_cost / (variance * gather_cost)
                        : 0;
   }
+}
+
+double EffortPrice::call_demand(GatherKind kind, int x, int y) const {
+  const EffortStats& tile = tiles_[static_cast<int>(kind)][Tile(x, y)];
+  const EffortStats& all = gathers_[static_cast<int>(kind)];
+  // A taken call's decisions: their time is what a call not taken saves.
+  auto decisions = [](const EffortStats& s) { return (s.seconds - s.sample_seconds) / s.call_rate; };
+  constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy
+  const double cost = tile.call_rate >= kFewCalls ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
+  if (!(value_of_time_ > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;
+  return std::sqrt(tile.call_m2 / tile.calls / cost * value_of_time_);
 }
 
 }  // namespace vrlis::integration

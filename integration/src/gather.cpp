@@ -77,6 +77,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   }
   if (stats) {
     taken.predicted = tally.predicted;
+    taken.sample_seconds = tally.sample_seconds;
     *stats += taken;
   }
   return sum;

@@ -5,7 +5,7 @@
 
 #include <atomic>
 #include <chrono>
-#include <mutex>
+#include <vector>
 
 #include "vrlis_integration/camera_paths.hpp"
 #include "vrlis_integration/light_paths.hpp"
@@ -14,7 +14,7 @@
 namespace vrlis::integration {
 namespace {
 
-// Calls f(x, y, rng, ray) for every pixel, in parallel over rows; the random stream of a
+// Calls f(ray, rng, x, y) for every pixel, in parallel over rows; the random stream of a
 // pixel depends on (seed, pass, pixel) only.
 template <typename F>
 Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f) {
@@ -25,7 +25,7 @@ Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t see
         Rng rng(seed, pass, static_cast<std::uint64_t>(y) * s.width + x, StreamPurpose::Camera);
         float jx = s.jitter ? rng.Uniform() : 0.5f, jy = s.jitter ? rng.Uniform() : 0.5f;
         Ray ray = scene.camera.Generate(x + jx, y + jy, s.width, s.height);
-        film.at(x, y) = f(ray, rng);
+        film.at(x, y) = f(ray, rng, x, y);
       }
       if (s.rows_done) s.rows_done->fetch_add(1, std::memory_order_relaxed);
     }
@@ -47,25 +47,31 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   std::atomic<std::uint64_t> gathers{0};
   // What the price learns from this pass, with the effort control on only.
   std::atomic<std::uint64_t> pixel_ns{0};
-  EffortStats medium_stats, surface_stats;
-  std::mutex effort_mutex;
   const vrlis::EffortSettings& effort = settings_.transport.effort;
+  const std::size_t pixels = effort.on ? static_cast<std::size_t>(settings_.width) * settings_.height : 0;
+  std::vector<EffortStats> medium_stats(pixels), surface_stats(pixels);
   vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
   medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
   surface_effort.price = price_.price(GatherKind::Surface);
   medium_effort.within = price_.within(GatherKind::Medium);
   surface_effort.within = price_.within(GatherKind::Surface);
-  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) {
+  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     GatherCount count;
-    auto p0 = effort.on ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, medium_effort, surface_effort);
-    gathers.fetch_add(count.Total(), std::memory_order_relaxed);
-    if (effort.on) {
-      pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
-      std::lock_guard<std::mutex> lock(effort_mutex);
-      medium_stats += count.medium_effort;
-      surface_stats += count.surface_effort;
+    if (!effort.on) {
+      Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count);
+      gathers.fetch_add(count.Total(), std::memory_order_relaxed);
+      return L;
     }
+    vrlis::EffortSettings m = medium_effort, s = surface_effort;
+    m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
+    s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
+    auto p0 = std::chrono::steady_clock::now();
+    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, m, s);
+    pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
+    gathers.fetch_add(count.Total(), std::memory_order_relaxed);
+    const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
+    medium_stats[i] = count.medium_effort;
+    surface_stats[i] = count.surface_effort;
     return L;
   });
   if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats, surface_stats);
@@ -76,7 +82,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
 Film PathTracingRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
   auto t0 = std::chrono::steady_clock::now();
   PathTracer pt(scene_, settings_.transport);
-  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng) { return pt.Li(ray, rng); });
+  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int, int) { return pt.Li(ray, rng); });
   if (stats) *stats = {0, 0, Since(t0)};
   return film;
 }

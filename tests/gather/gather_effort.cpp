@@ -48,8 +48,9 @@ struct Moments {
 };
 
 // The gather's sum over the setup's VRLs, `runs` times; with `sabotage` the effort weight is
-// left out.
-Moments Estimate(const Setup& s, const vrlis::EffortSettings& effort, int runs, bool sabotage = false) {
+// left out, and every weight is multiplied by `scale`.
+Moments Estimate(const Setup& s, const vrlis::EffortSettings& effort, int runs, bool sabotage = false,
+                 double scale = 1) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<Real> u(0, 1);
   double sum = 0, sum_sq = 0;
@@ -58,7 +59,7 @@ Moments Estimate(const Setup& s, const vrlis::EffortSettings& effort, int runs, 
     vrlis::GatherMediumVrls(s.method, effort, s.camera, s.medium, s.vrls.data(), s.weights.data(),
                             int(s.vrls.size()), [&] { return u(rng); },
                             [&](int i, const vrlis::GatherSample<Real>& g, Real w) {
-                              x += double(s.weights[std::size_t(i)]) * g.weight * (sabotage ? 1 : w);
+                              x += scale * double(s.weights[std::size_t(i)]) * g.weight * (sabotage ? 1 : w);
                             });
     sum += x;
     sum_sq += x * x;
@@ -98,6 +99,24 @@ TEST_CASE("roulette and splitting keep the gather unbiased; without 1 / q they d
   }
 }
 
+// A call taken at rate 0.3, its gathers 1 / 0.3 times as often: the mean is kept, and
+// without the call's 1 / rate in the weights (a sabotage) it is not.
+TEST_CASE("a call taken with a probability keeps the gather unbiased; without 1 / rate it does not",
+          "[gather][effort]") {
+  const Setup s = MakeSetup();
+  const Moments off = Estimate(s, {}, 40000);
+  const double hi = BoundRange(s).second;
+  vrlis::EffortSettings e{true, vrlis::Sqr(0.8 / hi)};  // every q at most 0.8 overall
+  e.call_demand = 0.3;
+  REQUIRE(vrlis::EffortCallRate(e) == 0.3);
+  const Moments on = Estimate(s, e, 60000);
+  INFO("off " << off.mean << " +- " << off.se << ", on " << on.mean << " +- " << on.se);
+  CHECK(Z(on, off) < 4);
+  const Moments sabotaged = Estimate(s, e, 60000, false, 0.3);
+  INFO("sabotaged " << sabotaged.mean << " +- " << sabotaged.se);
+  CHECK(Z(sabotaged, off) > 4);
+}
+
 TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][effort]") {
   vrlis::EffortSettings e;
   CHECK(vrlis::EffortQ(e, 1.0) == 1);  // off
@@ -131,6 +150,19 @@ TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][ef
   CHECK(vrlis::EffortQ(e, 0.25) == Approx(0.5));
   e.within = 1;
   CHECK(vrlis::EffortQ(e, 64.0) == Approx(8));
+  // A call's rate: its demand between the floor and one; 1 without a price or a demand.
+  e.call_demand = 0.3;
+  CHECK(vrlis::EffortCallRate(e) == 0.3);
+  e.call_demand = 1e-9;
+  CHECK(vrlis::EffortCallRate(e) == e.floor);
+  e.call_demand = 7;
+  CHECK(vrlis::EffortCallRate(e) == 1);
+  e.call_demand = std::numeric_limits<double>::quiet_NaN();
+  CHECK(vrlis::EffortCallRate(e) == 1);
+  e.call_demand = 0.3;
+  e.price = 0;
+  CHECK(vrlis::EffortCallRate(e) == 1);
+  e.price = 1;
   // Stochastic rounding: q samples on average.
   int total = 0;
   for (int k = 0; k < 1000; ++k) total += vrlis::EffortSamples(2.3, (k + 0.5) / 1000);

@@ -7,9 +7,11 @@
 //   (docs/compare/decomposition.md), the gathers fall towards the floor (by pass 5 under 0.15 of the
 //   uncontrolled count); in the bidirectional scene, which is nothing but gathers, the
 //   gathers taken stay at or above one per VRL;
+// - a call of gathers is taken at the floor's rate where its gathers carry no variance (room)
+//   and mostly taken where they carry it all (bidirectional);
 // - the controlled image's mean is the uncontrolled one's: per 4 x 4 block of the
-//   bidirectional scene (where roulette and splitting act most), z-scores within a Bonferroni
-//   bound.
+//   bidirectional scene (where roulette and splitting act most) and of room (where whole calls
+//   are rouletted), z-scores within a Bonferroni bound.
 #include <tbb/global_control.h>
 
 #include <catch2/catch.hpp>
@@ -75,8 +77,33 @@ TEST_CASE("effort: gathers without variance fall to the floor, a scene of gather
   CHECK(bidirectional >= 1);
 }
 
+TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort]") {
+  auto mean_rate = [](const char* scene) {
+    auto built = vrlis::scenes::BuildScene(scene, {});
+    REQUIRE(built);
+    const vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+    vrlis::integration::VrlRenderer r(built->scene, s);
+    for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
+    vrlis::EffortSettings e = s.transport.effort;
+    e.price = r.effort_price().price(vrlis::integration::GatherKind::Medium);
+    double sum = 0;
+    for (int y = 0; y < s.height; ++y)
+      for (int x = 0; x < s.width; ++x) {
+        e.call_demand = r.effort_price().call_demand(vrlis::integration::GatherKind::Medium, x, y);
+        sum += vrlis::EffortCallRate(e);
+      }
+    return sum / (s.width * s.height);
+  };
+  const double room = mean_rate("room"), bidirectional = mean_rate("bidirectional");
+  INFO("mean rate of a medium-to-medium call after 5 passes: room " << room << ", bidirectional " << bidirectional);
+  CHECK(room < 0.1);
+  CHECK(bidirectional > 0.5);
+}
+
 TEST_CASE("effort keeps the image's mean", "[render][effort]") {
-  auto built = vrlis::scenes::BuildScene("bidirectional", {});
+  const char* scene = GENERATE("bidirectional", "room");
+  INFO(scene);
+  auto built = vrlis::scenes::BuildScene(scene, {});
   REQUIRE(built);
   const int size = 16, block = 4, passes = 24;
   vrlis::integration::VrlRenderer off(built->scene, Settings(*built, size, false)), on(built->scene, Settings(*built, size, true));

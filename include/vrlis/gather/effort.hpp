@@ -30,6 +30,13 @@ struct EffortSettings {
   // With the `auto` sampler, the accurate model (FullProduct, VrlMarginal as step one) for a
   // gather that asks for more than this many ceilings of samples (docs/maths.md#effort-models).
   double accurate = 2.3;
+  // The whole call's demand, learned by the renderer from earlier calls like this one (e.g.
+  // of the same pixel tile): sqrt((its second moment / its cost) x (image cost / image
+  // variance)), docs/maths.md#effort-calls. Below one (and priced) the call is taken with that
+  // probability, at least `floor` (one number drawn first), and each gather in a taken call
+  // 1 / rate times as often: every gather's expected samples and weights stay those of its
+  // own demand, and the calls not taken save their bounds. 1, more or NaN: every call taken.
+  double call_demand = 1;
 };
 
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
@@ -38,8 +45,11 @@ struct EffortSettings {
 // over the samples is of the true second moments). Its own sum of the samples'
 // (effort weight x contribution^2), visibility included, estimates the true one: their ratio,
 // learned from earlier passes, scales the price (a bound is not a second moment).
+// `sample_seconds` is the time spent sampling and connecting the samples: the rest of a call's
+// time is its decisions' (docs/maths.md#effort-calls).
 struct EffortTally {
   double predicted = 0;
+  double sample_seconds = 0;
 };
 
 // Whether the control has a price to decide by: on, and a positive finite price learned.
@@ -66,6 +76,11 @@ inline double EffortClamp(const EffortSettings& e, double demand) {
   return EffortPriced(e) ? std::clamp(SplitDemand(e, demand), e.floor, e.ceiling) : 1;
 }
 inline double EffortQ(const EffortSettings& e, double m2) { return EffortClamp(e, EffortDemand(e, m2)); }
+
+// The probability that a call of gathers is taken (EffortSettings::call_demand).
+inline double EffortCallRate(const EffortSettings& e) {
+  return EffortPriced(e) && e.call_demand < 1 ? std::max(e.call_demand, e.floor) : 1;
+}
 
 // The model a gather's demand pays for (docs/maths.md#effort-models): at the floor its
 // variance is worth less than its time, and the cheapest model wins; far above the ceiling its

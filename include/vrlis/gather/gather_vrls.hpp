@@ -13,8 +13,10 @@
 // throughput, in the units of the price); unused with the effort control off. uniform()
 // returns a number in [0, 1). With the control off every VRL draws exactly its gather's
 // numbers (two, or one at a surface), in order, valid or not, so images do not depend on
-// batching or validity; with it on each also draws one for its number of samples first.
+// batching or validity; with it on the call may first draw one for whether it is taken
+// (EffortCallRate), and each VRL one for its number of samples.
 #include <algorithm>
+#include <chrono>
 #include <type_traits>
 
 #include "effort.hpp"
@@ -48,12 +50,16 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
                    Connect& connect, EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
   Batch batches[3];
+  const double rate = EffortCallRate(effort);
+  if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
   auto run = [&](EffortModel model) {
+    const auto start = tally ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Batch& batch = batches[static_cast<int>(model)];
     GatherSample<Real> samples[Batch::kSize];
     gather(model, batch, samples);
     for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
     batch.count = 0;
+    if (tally) tally->sample_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   for (int i = 0; i < count; ++i) {
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
@@ -68,11 +74,11 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
       };
       double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick(i))) : 0);
       if (demand > effort.floor) demand = EffortDemand(effort, predicted());
-      const double q = EffortClamp(effort, demand);
+      const double q = EffortClamp(effort, demand) / rate;  // within a taken call: q x rate overall
       if (policy) model = ChooseEffortModel(effort, demand);
       n = EffortSamples(q, double(uniform()));
-      weight = n > 0 ? Real(1 / q) : Real(0);
-      if (tally && n > 0) tally->predicted += n * predicted() / q;
+      weight = n > 0 ? Real(1 / (rate * q)) : Real(0);
+      if (tally && n > 0) tally->predicted += n * predicted() / (rate * q);
     }
     Batch& batch = batches[static_cast<int>(model)];
     for (int j = 0; j < n; ++j) {
@@ -95,7 +101,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
-// tally, if set, adds the predictions (effort on only).
+// tally, if set, adds the predictions (effort on only) and the seconds of sampling.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
                       const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,

@@ -13,17 +13,24 @@
 
 namespace vrlis::integration {
 
-// What a pass's gathers tell the price, summed over pixels: the gathers taken, their time,
-// the predicted second moments (vrlis::EffortTally) and the samples' own estimate of them.
-// Of the gathers split into several samples: the sum of their within variances and of their
-// second moments, each estimated from its own samples (the share splitting reduces).
+// What a pixel's gathers tell the price in a pass: the gathers taken, the seconds of the
+// calls that took them, the predicted second moments (vrlis::EffortTally) and the samples'
+// own estimate of them. Of the gathers split into several samples: the sum of their within
+// variances and of their second moments, each estimated from its own samples (the share
+// splitting reduces). Of the calls (vrlis::EffortCallRate): how many, the sum of their rates
+// and of rate x (contribution to the pixel)^2, an estimate of their second moments had each
+// been taken (docs/maths.md#effort-calls). Of the seconds, those spent sampling (the rest is
+// the decisions').
 struct EffortStats {
   std::uint64_t gathers = 0;
-  double seconds = 0, predicted = 0, measured = 0;
+  double seconds = 0, sample_seconds = 0, predicted = 0, measured = 0;
   double split_within = 0, split_second = 0;
+  double calls = 0, call_rate = 0, call_m2 = 0;
   void operator+=(const EffortStats& o) {
-    gathers += o.gathers, seconds += o.seconds, predicted += o.predicted, measured += o.measured;
+    gathers += o.gathers, seconds += o.seconds, sample_seconds += o.sample_seconds;
+    predicted += o.predicted, measured += o.measured;
     split_within += o.split_within, split_second += o.split_second;
+    calls += o.calls, call_rate += o.call_rate, call_m2 += o.call_m2;
   }
 };
 
@@ -32,13 +39,18 @@ enum class GatherKind { Medium, Surface };
 
 class EffortPrice {
  public:
-  static constexpr int kMinPasses = 2;  // a variance needs two passes
+  // The passes that take every gather once: the first price's variance comes from the one
+  // pass's neighbouring pixels, the next from the passes over time.
+  static constexpr int kMinPasses = 1;
 
   EffortPrice() = default;
   EffortPrice(int width, int height);
+  static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
+
   // One finished pass: its image, the seconds its pixels took (summed over threads) and
-  // what its medium-to-medium and medium-to-surface gathers tell.
-  void Add(const Film& pass, double pixel_seconds, const EffortStats& medium, const EffortStats& surface);
+  // what each pixel's medium-to-medium and medium-to-surface gathers tell.
+  void Add(const Film& pass, double pixel_seconds, const std::vector<EffortStats>& medium,
+           const std::vector<EffortStats>& surface);
   // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
   // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
   // gather taken once).
@@ -49,16 +61,35 @@ class EffortPrice {
     const EffortStats& g = gathers_[static_cast<int>(kind)];
     return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;
   }
+  // The demand of one call of the gathers at pixel (x, y) (vrlis::EffortSettings::call_demand):
+  // sqrt((second moment / cost of a call) x (pixel cost / pixel variance)), both of a call
+  // from the earlier calls of the pixel's tile (the cost from the kind's calls while the
+  // tile's are few); 1 before kMinPasses passes.
+  double call_demand(GatherKind kind, int x, int y) const;
   int passes() const { return passes_; }
 
  private:
   void Refresh();
+  std::size_t Tile(int x, int y) const {
+    return static_cast<std::size_t>(y / kTile) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(x / kTile);
+  }
 
+  // Of the first kMinPasses passes, or of those after: per pixel, the sums of one pass's
+  // RMS RGB value and of its square, and the pixels' seconds.
+  struct Passes {
+    std::vector<double> sum, sum_sq;
+    double pixel_seconds = 0;
+    int count = 0;
+  };
   int width_ = 0, height_ = 0, passes_ = 0;
-  std::vector<double> sum_, sum_sq_;  // per pixel, of one pass's RMS RGB value
-  double pixel_seconds_ = 0;
+  std::size_t pixels_ = 0;
+  Passes passes_of_[2];
+  double value_of_time_ = 0;  // pixel cost / pixel variance
+  int tiles_x_ = 0;
   EffortStats gathers_[2];
-  EffortStats uncontrolled_[2];  // of the passes that took every gather once: the cost of one
+  std::vector<EffortStats> tiles_[2];
+  EffortStats uncontrolled_[2];  // of the first kMinPasses passes, which took every gather once
+  EffortStats controlled_[2];    // of the passes after
   double price_[2] = {0, 0};
 };
 
