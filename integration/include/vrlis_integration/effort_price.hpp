@@ -3,8 +3,9 @@
 // from the passes already rendered: the variance of one pass's pixel estimate, averaged over
 // pixels with the largest thousandth left out (a few fireflies must not flip decisions; the
 // predicted second moments keep theirs, and more left out here overprices variance), and the
-// time a pixel and a gather cost. A pass's decisions read the price of the passes
-// before it only: the renderer adds a pass after rendering it.
+// time a pixel and a gather cost; per pixel tile, what a whole call of gathers is worth. A
+// pass's decisions read the price of the passes before it only: the renderer adds a pass
+// after rendering it.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
