@@ -82,14 +82,13 @@ inline double EffortCallRate(const EffortSettings& e) {
   return EffortPriced(e) && e.call_demand < 1 ? std::max(e.call_demand, e.floor) : 1;
 }
 
-// The model a gather's demand pays for (docs/maths.md#effort-models): at the floor its
-// variance is worth less than its time, and the cheapest model wins; far above the ceiling its
-// variance outweighs its time, and the most accurate one wins; between, the per-query rule of
-// the sampler asked for.
-enum class EffortModel { Cheapest, Chosen, Accurate };
+// The model a gather's demand pays for (docs/maths.md#effort-models): far above the ceiling
+// its variance outweighs its time, and the most accurate one wins; below, the per-query rule
+// of the sampler asked for, at the floor too (the cheapest model's second moment can exceed
+// the model-blind prediction many times).
+enum class EffortModel { Chosen, Accurate };
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
   if (!EffortPriced(e)) return EffortModel::Chosen;
-  if (demand <= e.floor) return EffortModel::Cheapest;
   return SplitDemand(e, demand) >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
 }
 

@@ -49,7 +49,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
                    int count, bool valid, Uniform& uniform, Quick&& quick, Predict&& predict, Gather&& gather,
                    Connect& connect, EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
-  Batch batches[3];
+  Batch batches[2];
   const double rate = EffortCallRate(effort);
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
   auto run = [&](EffortModel model) {
@@ -93,7 +93,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     }
     if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
-  for (EffortModel m : {EffortModel::Cheapest, EffortModel::Chosen, EffortModel::Accurate})
+  for (EffortModel m : {EffortModel::Chosen, EffortModel::Accurate})
     if (batches[static_cast<int>(m)].count > 0) run(m);
 }
 
@@ -121,8 +121,6 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
                 ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples);
           };
           if constexpr (policy) {
-            if (model == EffortModel::Cheapest)
-              return with(Type<VrlPointEntry::Sampler<Real>>{}, Type<EquiangularEntry::Sampler<Real>>{});
             if (model == EffortModel::Accurate)
               return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Type<FullProductEntry::Sampler<Real>>{});
           }
@@ -152,7 +150,6 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
                                                                    b.count, b.u[0], samples);
           };
           if constexpr (policy) {
-            if (model == EffortModel::Cheapest) return with(Type<EquiangularEntry::Sampler<Real>>{});
             if (model == EffortModel::Accurate) return with(Type<FullProductEntry::Sampler<Real>>{});
           }
           with(Type<Sampler>{});
