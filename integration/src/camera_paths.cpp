@@ -30,10 +30,9 @@ class Timer {
 // rate (an estimate of the call's second moment had it been taken, docs/maths.md#effort-calls).
 void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortStats* stats) {
   const double rate = vrlis::EffortCallRate(effort);
-  const double c = contribution.r, g = contribution.g, b = contribution.b;
   stats->calls += 1;
   stats->call_rate += rate;
-  stats->call_m2 += rate * (c * c + g * g + b * b) / 3;
+  stats->call_m2 += rate * contribution.MeanSquare();
 }
 
 }  // namespace

@@ -27,8 +27,7 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds, const std::vector<
     }
   Passes& into = passes_of_[passes_ >= kMinPasses];
   for (std::size_t i = 0; i < pixels_; ++i) {
-    const Spectrum& s = pass.pixels[i];
-    double v = std::sqrt((double(s.r) * s.r + double(s.g) * s.g + double(s.b) * s.b) / 3);
+    const double v = std::sqrt(pass.pixels[i].MeanSquare());
     if (!std::isfinite(v)) continue;
     into.sum[i] += v;
     into.sum_sq[i] += v * v;

@@ -24,8 +24,6 @@ float Connect(const Scene& scene, const vrlis::GatherSample<float>& s) {
   return Connect(scene, s.camera_point, s.light_point, s.weight, s.transmittance);
 }
 
-float RmsRgb(Spectrum s) { return std::sqrt((s.r * s.r + s.g * s.g + s.b * s.b) / 3); }
-
 }  // namespace
 
 Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, const Vrl& vrl, float v, float t) {
@@ -56,14 +54,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     double sum_y[kChunk] = {}, sum_y2[kChunk] = {};  // per VRL, of its samples' unweighted contributions
     for (int i = 0; i < n; ++i) {
       segments[i] = SegmentOf(chunk[i]);
-      weights[i] = RmsRgb(throughput * chunk[i].flux);
+      weights[i] = (throughput * chunk[i].flux).Rms();
     }
     auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
       Spectrum x = chunk[i].flux * (Connect(scene, s) * effort_weight);
       sum += x;
       if (!stats) return;
       ++taken.gathers;
-      double y = RmsRgb(throughput * x) / effort_weight;
+      double y = (throughput * x).Rms() / effort_weight;
       taken.measured += effort_weight * y * y;
       ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
@@ -92,7 +90,7 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
   Rng own = rng.Split();
   if (log)
     for (const Vrl* vrl = first; vrl != last; ++vrl)
-      log->Record({camera, SegmentOf(*vrl), medium}, RmsRgb(throughput * vrl->flux));
+      log->Record({camera, SegmentOf(*vrl), medium}, (throughput * vrl->flux).Rms());
   return SumOverChunks(scene, first, last, throughput, stats,
                        [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
                            vrlis::EffortTally* tally) {

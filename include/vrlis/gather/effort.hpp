@@ -31,8 +31,8 @@ struct EffortSettings {
   // gather that asks for more than this many ceilings of samples (docs/maths.md#effort-models).
   double accurate = 2.3;
   // The whole call's demand, learned by the renderer from earlier calls like this one (e.g.
-  // of the same pixel tile): sqrt((its second moment / its cost) x (image cost / image
-  // variance)), docs/maths.md#effort-calls. Below one (and priced) the call is taken with that
+  // of the same pixel tile): sqrt((its second moment / the seconds its decisions take) x
+  // (image cost / image variance)), docs/maths.md#effort-calls. Below one (and priced) the call is taken with that
   // probability, at least `floor` (one number drawn first), and each gather in a taken call
   // 1 / rate times as often: every gather's expected samples and weights stay those of its
   // own demand, and the calls not taken save their bounds. 1, more or NaN: every call taken.

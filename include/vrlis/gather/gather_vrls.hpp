@@ -74,11 +74,11 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
       };
       double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick(i))) : 0);
       if (demand > effort.floor) demand = EffortDemand(effort, predicted());
-      const double q = EffortClamp(effort, demand) / rate;  // within a taken call: q x rate overall
+      const double q = EffortClamp(effort, demand);  // overall; q / rate within a taken call
       if (policy) model = ChooseEffortModel(effort, demand);
-      n = EffortSamples(q, double(uniform()));
-      weight = n > 0 ? Real(1 / (rate * q)) : Real(0);
-      if (tally && n > 0) tally->predicted += n * predicted() / (rate * q);
+      n = EffortSamples(q / rate, double(uniform()));
+      weight = n > 0 ? Real(1 / q) : Real(0);
+      if (tally && n > 0) tally->predicted += n * predicted() / q;
     }
     Batch& batch = batches[static_cast<int>(model)];
     for (int j = 0; j < n; ++j) {

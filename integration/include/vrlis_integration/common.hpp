@@ -34,6 +34,9 @@ struct Spectrum {
   Spectrum& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
   float MaxComponent() const { return std::max({r, g, b}); }
   float Average() const { return (r + g + b) / 3; }
+  // The mean of the squared channels (in double), and its root: one number for a colour's size.
+  double MeanSquare() const { return (double(r) * r + double(g) * g + double(b) * b) / 3; }
+  float Rms() const { return static_cast<float>(std::sqrt(MeanSquare())); }
   bool IsBlack() const { return r == 0 && g == 0 && b == 0; }
 };
 inline Spectrum operator+(Spectrum a, Spectrum b) { return a += b; }

@@ -44,9 +44,10 @@ class EffortPrice {
   // pass's neighbouring pixels, the next from the passes over time.
   static constexpr int kMinPasses = 1;
 
+  static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
+
   EffortPrice() = default;
   EffortPrice(int width, int height);
-  static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
 
   // One finished pass: its image, the seconds its pixels took (summed over threads) and
   // what each pixel's medium-to-medium and medium-to-surface gathers tell.
@@ -63,9 +64,9 @@ class EffortPrice {
     return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;
   }
   // The demand of one call of the gathers at pixel (x, y) (vrlis::EffortSettings::call_demand):
-  // sqrt((second moment / cost of a call) x (pixel cost / pixel variance)), both of a call
-  // from the earlier calls of the pixel's tile (the cost from the kind's calls while the
-  // tile's are few); 1 before kMinPasses passes.
+  // sqrt((second moment / decision seconds of a taken call) x (pixel cost / pixel variance)),
+  // both from the earlier calls of the pixel's tile (the seconds from the kind's calls while
+  // the tile has taken few); 1 before kMinPasses passes.
   double call_demand(GatherKind kind, int x, int y) const;
   int passes() const { return passes_; }
 
