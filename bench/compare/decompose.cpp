@@ -230,7 +230,8 @@ void SplitSteps(const vrlis::integration::Scene& scene, const vrlis::integration
 }  // namespace
 
 DecomposeResult Decompose(const DecomposeConfig& config) {
-  const StudyScene scene = BuildStudyScene(config.scene, {}, config.width, config.height, config.vrls);
+  StudyScene scene = BuildStudyScene(config.scene, {}, config.width, config.height, config.vrls);
+  scene.settings.transport.vertex_single_scattering = !config.segment_scattering;
   DecomposeResult out;
   out.config = config;
   out.g = scene.built.scene.medium.g;

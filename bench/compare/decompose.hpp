@@ -25,6 +25,9 @@ struct DecomposeConfig {
   int replicates = 8;             // batches for the standard errors
   int max_pixels = 48;            // (2) uses an even subset of the pixels that see the medium
   std::uint64_t seed = 1;
+  // Path-traced parts estimate point-light single scattering along each segment instead of
+  // jointly at the vertex before it (the variant of unbounded variance next to a light).
+  bool segment_scattering = false;
 };
 
 struct Estimate {

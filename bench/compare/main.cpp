@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> scenes = {"bidirectional", "room"};
   std::vector<float> gs = {-0.9f, 0.5f, 0.9f};
   std::vector<std::string> sampler_names;
-  bool full = false, decompose = false, with_effort = false;
+  bool full = false, decompose = false, with_effort = false, segment_scattering = false;
   StudyConfig base;
   double reference_factor = 2, decompose_seconds = 20, step_seconds = 15;
   int threads = 2;
@@ -154,6 +154,8 @@ int main(int argc, char** argv) {
   app.add_flag("--with-effort", with_effort, "Every sampler also with the effort control on (NAME+effort; "
                                            "a sampler is named so in --samplers too)");
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
+  app.add_flag("--segment-scattering", segment_scattering, "--decompose: path-traced parts estimate point-light "
+               "single scattering along each segment, not jointly at the vertex before it");
   app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
   app.add_option("--samplers", sampler_names, "Camera samplers, the baseline " + SamplerName(vrlis::compare::kBaseline) + " among them (default: all)")->delimiter(',');
@@ -186,6 +188,7 @@ int main(int argc, char** argv) {
     if (app.count("--budget") == 0) base.budget = 12;
   }
   if (decompose && base.vrl_only) return Fail("--decompose splits the whole transport; it does not take --vrl-only");
+  if (segment_scattering && !decompose) return Fail("--segment-scattering is an option of --decompose");
   if (decompose && app.count("--scenes") == 0)
     scenes.assign(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end());
 
@@ -250,6 +253,7 @@ int main(int argc, char** argv) {
         c.budget = decompose_seconds;
         c.step_budget = step_seconds;
         c.seed = base.seed;
+        c.segment_scattering = segment_scattering;
         std::fprintf(stderr, "%s: decomposing (%.3g s parts, %.3g s steps) ...\n", scene.c_str(), c.budget,
                      c.step_budget);
         nlohmann::json j = DecompositionJson(vrlis::compare::Decompose(c));

@@ -24,7 +24,7 @@ std::vector<GatherSamplers> Mixture(const StudyConfig& c) {
 // Everything a reference image depends on; a cached one is reused only if this matches.
 std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::TransportSettings& t) {
   std::ostringstream key;
-  key << "v2 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
+  key << "v3 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
       << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " samplers=";
   for (GatherSamplers s : Mixture(c)) key << SamplerName(s) << ",";
   key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect

@@ -3,6 +3,7 @@
 #include "core/phase.hpp"
 #include "core/query.hpp"
 #include "core/running_moments.hpp"
+#include "core/two_point_direction.hpp"
 #include "angle/angle_domain.hpp"
 #include "angle/phase_product.hpp"
 #include "angle/full_product.hpp"

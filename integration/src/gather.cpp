@@ -1,8 +1,10 @@
 #include "vrlis_integration/gather.hpp"
 
+#include <vrlis/core/two_point_direction.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
 #include <vrlis/gather/medium_gather.hpp>
 #include <vrlis/gather/point_light_gather.hpp>
+#include <vrlis/samplers/equiangular.hpp>
 
 namespace vrlis::integration {
 namespace {
@@ -125,11 +127,13 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
                                 });
 }
 
-Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng) {
+Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng,
+                          bool after_vertex) {
   const HomogeneousMedium& m = scene.medium;
   Spectrum sum;
   for (const PointLight& l : scene.lights.points) {
     if (l.fibonacci_beams) continue;  // delta directions: a camera ray never meets a beam
+    if (after_vertex && GatheredAtVertex(scene, l)) continue;
     vrlis::PointLightGatherQuery<float> q{SegmentOf(seg), l.position, MediumOf(m)};
     sum += l.intensity * Connect(scene, vrlis::SamplePointLightGather(method, q, rng.Uniform()));
   }
@@ -144,6 +148,36 @@ Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const
       float tr = scene.Connect(x, ls->source);
       if (tr > 0) sum += ls->value * (w * Phase(m.g, Dot(ls->wi, seg.ray.d)) * tr);
     }
+  }
+  return sum;
+}
+
+float VertexLobe::operator()(Vec3f w) const {
+  return cosine ? std::max(0.f, Dot(axis, w)) / kPi : vrlis::HenyeyGreenstein(g, Dot(axis, w));
+}
+
+bool GatheredAtVertex(const Scene& scene, const PointLight& light) {
+  return !light.fibonacci_beams && scene.medium.Contains(light.position);
+}
+
+Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& lobe, Rng& rng) {
+  constexpr vrlis::SegmentChoice kEquiangular = vrlis::SegmentSamplers::Of<vrlis::EquiangularEntry>();
+  Spectrum sum;
+  for (const PointLight& l : scene.lights.points) {
+    if (!GatheredAtVertex(scene, l)) continue;
+    const float u1 = rng.Uniform(), u2 = rng.Uniform(), u3 = rng.Uniform();
+    Vec3f to_light = l.position - p;
+    if (!(Dot(to_light, to_light) > 0)) continue;
+    Vec3f axis = Normalize(to_light);
+    Ray ray{p, vrlis::SampleTwoPointDirection(axis, u1, u2)};
+    float f = lobe(ray.d), pdf = vrlis::TwoPointDirectionPdf(axis, ray.d);
+    if (!(f > 0) || !(pdf > 0) || !std::isfinite(pdf)) continue;
+    SurfaceHit hit;
+    bool found = scene.Intersect(ray, &hit);
+    CameraSegment seg{ray, scene.medium.Clip(ray, found ? hit.t : kInfinity)};
+    if (seg.iv.Empty()) continue;
+    vrlis::PointLightGatherQuery<float> q{SegmentOf(seg), l.position, MediumOf(scene.medium)};
+    sum += l.intensity * (Connect(scene, vrlis::SamplePointLightGather(kEquiangular, q, u3)) * (f / pdf));
   }
   return sum;
 }

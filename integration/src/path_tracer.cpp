@@ -11,6 +11,11 @@ constexpr vrlis::SegmentChoice kEquiangular = vrlis::SegmentSamplers::Of<vrlis::
 Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) const {
   const HomogeneousMedium& m = scene_.medium;
   Spectrum L, beta(1.f);
+  bool after_vertex = false;  // the ray leaves a vertex that gathered with VertexSingleScattering
+  auto at_vertex = [&](Vec3f p, VertexLobe lobe) {
+    after_vertex = tr_.vertex_single_scattering;
+    if (after_vertex) L += beta * VertexSingleScattering(scene_, p, lobe, rng);
+  };
   for (; depth < tr_.max_depth; ++depth) {
     SurfaceHit hit;
     bool found = scene_.Intersect(ray, &hit);
@@ -23,11 +28,12 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
         // Light scattered once on this segment, estimated over the whole segment: a point light
         // seen from a free-flight vertex would weigh I / r^2, of infinite variance next to the
         // light, while equiangular sampling cancels the 1 / r^2 (Kulla and Fajardo 2012).
-        L += beta * SingleScattering(kEquiangular, scene_, CameraSegment{ray, iv}, rng);
+        L += beta * SingleScattering(kEquiangular, scene_, CameraSegment{ray, iv}, rng, after_vertex);
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {  // a medium vertex: the path goes on from it
           beta *= m.Albedo();
           Vec3f p = ray(d);
+          at_vertex(p, {ray.d, m.g, false});
           float u1 = rng.Uniform(), u2 = rng.Uniform();
           ray = {p, SamplePhase(m.g, ray.d, u1, u2)};
           scattered = true;
@@ -40,10 +46,12 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
       const Material& mat = scene_.materials[static_cast<std::size_t>(hit.material)];
       if (mat.IsSpecular()) {
         BounceSpecular(mat, hit.p, hit.n, rng.Uniform(), &ray, &beta);
+        after_vertex = false;  // a delta direction: nothing to gather jointly
       } else {
         Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
         L += beta * DirectSurface(scene_, hit.p, nf, mat.albedo);
         beta *= mat.albedo;
+        at_vertex(hit.p, {nf, 0, true});
         float u1 = rng.Uniform(), u2 = rng.Uniform();
         ray = {hit.p, SampleCosineHemisphere(nf, u1, u2)};
       }

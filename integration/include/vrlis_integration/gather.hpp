@@ -48,7 +48,30 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
                                const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr);
 
 // Single scattering along the segment from every light (point lights: the camera point by
-// `method`; collimated lights: uniform in distance).
-Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng);
+// `method`; collimated lights: uniform in distance). `after_vertex`: the segment leaves a
+// scattering vertex that VertexSingleScattering already gathered at, so the point lights it
+// covers are left out.
+Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng,
+                          bool after_vertex = false);
+
+// How a scattering vertex sends light on: the phase function about the direction of travel
+// into a medium vertex, or the cosine about a diffuse point's normal (the albedo is the
+// caller's), as densities over the directions leaving it.
+struct VertexLobe {
+  Vec3f axis{};
+  float g = 0;
+  bool cosine = false;
+  float operator()(Vec3f w) const;
+};
+
+// Whether VertexSingleScattering covers this light: a point light inside the medium, next to
+// which a ray sampled by the lobe and then a distance would keep a 1 / sin weight of
+// unbounded variance (docs/maths.md#two-point).
+bool GatheredAtVertex(const Scene& scene, const PointLight& light);
+
+// Light of the point lights GatheredAtVertex covers, scattered once in the medium and then at
+// the vertex p through `lobe`: the direction from p by vrlis::SampleTwoPointDirection, the
+// distance on its medium segment by equiangular sampling about the light.
+Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& lobe, Rng& rng);
 
 }  // namespace vrlis::integration

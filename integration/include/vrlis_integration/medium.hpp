@@ -23,6 +23,10 @@ struct HomogeneousMedium {
   float SigmaT() const { return sigma_s + sigma_a; }
   float Albedo() const { return SigmaT() > 0 ? sigma_s / SigmaT() : 0.f; }
   bool Present() const { return sigma_s > 0 || sigma_a > 0; }
+  bool Contains(Vec3f p) const {
+    if (!Present()) return false;
+    return !bounded || (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z);
+  }
 
   // The part of the ray's [0, tmax] inside the medium.
   Interval Clip(const Ray& ray, float tmax) const {

@@ -1,8 +1,10 @@
 #pragma once
 // A volumetric path tracer with next-event estimation: free-flight distance sampling,
 // phase-function and cosine sampling, Russian roulette; in the medium, light scattered once
-// on a segment is estimated along the whole segment by equiangular sampling. It is the reference renderer, and
-// the VRL renderer's `indirect` part continues paths with it.
+// on a segment is estimated along the whole segment by equiangular sampling, except that a
+// point light inside the medium is gathered at the scattering vertex before the segment
+// (VertexSingleScattering). It is the reference renderer, and the VRL renderer's `indirect`
+// part continues paths with it.
 #include "scene.hpp"
 #include "transport.hpp"
 

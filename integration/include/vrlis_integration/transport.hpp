@@ -19,6 +19,10 @@ struct TransportSettings {
   // the comparison's noise decomposition takes the two apart).
   bool single_scattering = true;
   bool indirect = true;           // path-traced remainder (second vertex not a VRL point)
+  // In path-traced parts, light of point lights inside the medium scattered once and then at a
+  // scattering vertex is sampled jointly from the vertex (off: along the next segment, whose
+  // weight has unbounded variance next to the light; docs/maths.md#two-point).
+  bool vertex_single_scattering = true;
   // Light paths that meet a specular surface before any diffuse or medium vertex (L S+ ...)
   // may go on. Off, the VRL image holds exactly what a path tracer with next-event
   // estimation can sample from point and collimated lights.
