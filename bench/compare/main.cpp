@@ -156,7 +156,9 @@ int main(int argc, char** argv) {
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_flag("--segment-scattering", segment_scattering, "--decompose: path-traced parts estimate point-light "
                "single scattering along each segment, not jointly at the vertex before it");
-  app.add_option("--scenes", scenes, "Scenes (bidirectional, room, cube, corner)")->delimiter(',')->capture_default_str();
+  std::string scene_names;
+  for (auto n : vrlis::scenes::kSceneNames) scene_names += (scene_names.empty() ? "" : ", ") + std::string(n);
+  app.add_option("--scenes", scenes, "Scenes (" + scene_names + ")")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
   app.add_option("--samplers", sampler_names, "Camera samplers, the baseline " + SamplerName(vrlis::compare::kBaseline) + " among them (default: all)")->delimiter(',');
   app.add_option("--budget", base.budget, "Seconds of passes per sampler and study, at least")->capture_default_str();
@@ -195,7 +197,7 @@ int main(int argc, char** argv) {
   // Every argument is checked here, before anything is written.
   for (const std::string& s : scenes)
     if (std::find(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end(), s) == vrlis::scenes::kSceneNames.end())
-      return Fail("unknown scene '" + s + "' (bidirectional, room, cube, corner)");
+      return Fail("unknown scene '" + s + "' (" + scene_names + ")");
   if (scenes.empty() || gs.empty()) return Fail("--scenes and --g need at least one value");
   for (float g : gs)
     if (!(g > -1 && g < 1)) return Fail("--g values must lie in (-1, 1)");

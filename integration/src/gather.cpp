@@ -19,11 +19,15 @@ vrlis::VrlSegment<float> SegmentOf(const Vrl& vrl) { return {vrl.origin, vrl.dir
 // a bounded medium may not, and then the scene's own transmittance replaces it.
 float Connect(const Scene& scene, Vec3f a, Vec3f b, float weight, float transmittance) {
   if (!(weight > 0) || scene.geometry->Occluded(a, b)) return 0;
-  if (!scene.medium.bounded) return weight;
+  if (!scene.medium.Bounded()) return weight;
   return weight * (scene.Transmittance(a, b) / transmittance);
 }
 float Connect(const Scene& scene, const vrlis::GatherSample<float>& s) {
   return Connect(scene, s.camera_point, s.light_point, s.weight, s.transmittance);
+}
+// A point light's cone is the renderer's: the library's point light emits everywhere.
+float Connect(const Scene& scene, const PointLight& light, const vrlis::GatherSample<float>& s) {
+  return light.Lights(s.camera_point) ? Connect(scene, s) : 0.f;
 }
 
 }  // namespace
@@ -135,19 +139,20 @@ Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const
     if (l.fibonacci_beams) continue;  // delta directions: a camera ray never meets a beam
     if (after_vertex && GatheredAtVertex(scene, l)) continue;
     vrlis::PointLightGatherQuery<float> q{SegmentOf(seg), l.position, MediumOf(m)};
-    sum += l.intensity * Connect(scene, vrlis::SamplePointLightGather(method, q, rng.Uniform()));
+    sum += l.intensity * Connect(scene, l, vrlis::SamplePointLightGather(method, q, rng.Uniform()));
   }
-  if (!scene.lights.rects.empty() && std::isfinite(seg.iv.b)) {
-    // Collimated beams: one distance, uniform on the segment, shared by all of them.
-    float u = seg.iv.a + rng.Uniform() * seg.iv.Length();
+  for (const CollimatedRect& l : scene.lights.rects) {
+    // A collimated beam: a distance uniform on the part of the segment inside the beam.
+    auto [a, b] = l.Clip(seg.ray, seg.iv.a, seg.iv.b);
+    const float u1 = rng.Uniform();
+    if (!(b > a) || !std::isfinite(b)) continue;
+    float u = std::min(a + u1 * (b - a), b);
     Vec3f x = seg.ray(u);
-    float w = m.sigma_s * std::exp(-m.SigmaT() * (u - seg.iv.a)) * seg.iv.Length();
-    for (const CollimatedRect& l : scene.lights.rects) {
-      std::optional<LightSample> ls = SampleLight(l, x);
-      if (!ls) continue;
-      float tr = scene.Connect(x, ls->source);
-      if (tr > 0) sum += ls->value * (w * Phase(m.g, Dot(ls->wi, seg.ray.d)) * tr);
-    }
+    std::optional<LightSample> ls = SampleLight(l, x);
+    if (!ls) continue;  // on the beam's edge, to rounding
+    float w = m.sigma_s * std::exp(-m.SigmaT() * (u - seg.iv.a)) * (b - a);
+    float tr = scene.Connect(x, ls->source);
+    if (tr > 0) sum += ls->value * (w * Phase(m.g, Dot(ls->wi, seg.ray.d)) * tr);
   }
   return sum;
 }
@@ -177,7 +182,7 @@ Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& l
     CameraSegment seg{ray, scene.medium.Clip(ray, found ? hit.t : kInfinity)};
     if (seg.iv.Empty()) continue;
     vrlis::PointLightGatherQuery<float> q{SegmentOf(seg), l.position, MediumOf(scene.medium)};
-    sum += l.intensity * (Connect(scene, vrlis::SamplePointLightGather(kEquiangular, q, u3)) * (f / pdf));
+    sum += l.intensity * (Connect(scene, l, vrlis::SamplePointLightGather(kEquiangular, q, u3)) * (f / pdf));
   }
   return sum;
 }

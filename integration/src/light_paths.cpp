@@ -22,8 +22,9 @@ Emission SampleEmission(const Scene& scene, int index, int count, Rng& rng) {
   float u1 = rng.Uniform(), u2 = rng.Uniform();
   if (k < scene.lights.points.size()) {
     const PointLight& l = scene.lights.points[k];
-    Vec3f d = l.fibonacci_beams ? FibonacciDirection(index, count) : SampleUniformSphere(u1, u2);
-    return {{l.position, d}, l.intensity * (4 * kPi / (pick * count))};
+    Vec3f d = l.fibonacci_beams ? FibonacciDirection(index, count)
+                                : SphericalDirection(Frame(l.axis), 1 - u1 * (1 - l.cos_cone), 2 * kPi * u2);
+    return {{l.position, d}, l.intensity * (l.SolidAngle() / (pick * count))};
   }
   const CollimatedRect& l = scene.lights.rects[k - scene.lights.points.size()];
   float power = l.Area() * std::abs(Dot(l.Normal(), l.direction));

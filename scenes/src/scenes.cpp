@@ -60,7 +60,7 @@ void Cube(BuiltScene& b, EmbreeGeometry& g) {
   g.AddSphere({2.0f, -2.05f, -3.7f}, 0.5f, AddMaterial(s, {MaterialKind::Glass, Spectrum(1.f), 1.5f}));
   g.AddSphere({-1.75f, -1.95f, -3.1f}, 0.6f, Diffuse(s, {0, 0, 1}));
   s.medium = {0.1f, 0.5f, 0.5f};
-  s.medium.bounded = true;
+  s.medium.shape = vrlis::integration::HomogeneousMedium::Shape::Box;
   s.medium.lo = {-0.75f, -1.75f, -3.75f};
   s.medium.hi = {0.75f, -0.25f, -2.25f};
   s.lights.points.push_back({{0, 1.9f, -3}, Spectrum(6.f), false});
@@ -94,6 +94,36 @@ void Corner(BuiltScene& b, EmbreeGeometry& g) {
   s.camera.fov_x = vrlis::integration::kPi / 3;
 }
 
+// A dense, bright cloud over a floor under a spot light: multiple scattering carries its light
+// (several mean free paths thick, albedo 0.95), and the floor receives its shadow and glow.
+void Cloud(BuiltScene& b, EmbreeGeometry& g) {
+  vrlis::integration::Scene& s = b.scene;
+  int grey = Diffuse(s, Spectrum(0.5f));
+  g.AddQuad({-8, -1.5f, 1}, {8, -1.5f, 1}, {8, -1.5f, -12}, {-8, -1.5f, -12}, grey);  // the floor
+  s.medium = {2.0f, 0.1f, 0.7f};
+  s.medium.shape = vrlis::integration::HomogeneousMedium::Shape::Sphere;
+  s.medium.center = {0, 0.3f, -3.6f};
+  s.medium.radius = 1.1f;
+  vrlis::integration::PointLight spot{{2.5f, 3.0f, -2.0f}, Spectrum(20.f), false};
+  spot.axis = vrlis::integration::Normalize(s.medium.center - spot.position);
+  spot.cos_cone = std::cos(25 * vrlis::integration::kPi / 180);  // the cloud and a pool of floor around it
+  s.lights.points.push_back(spot);
+}
+
+// The room filled with fog that scatters, lit through one window by a collimated beam: the
+// god ray and the glow around it come from light scattered many times.
+void Fog(BuiltScene& b, EmbreeGeometry& g) {
+  vrlis::integration::Scene& s = b.scene;
+  // Dark walls, as in a hall: the light the fog sends on is the fog's.
+  int dark = Diffuse(s, Spectrum(0.15f));
+  int orange = Diffuse(s, {0.3f, 0.15f, 0}), cyan = Diffuse(s, {0, 0.3f, 0.3f});
+  AddRoom(g, {-2.55f, -2.5f, -4.5f}, {2.55f, 2.5f, 0.5f}, orange, cyan, dark, dark, dark, dark);
+  g.AddBox({0.25f, -2.5f, -3.75f}, {1.75f, -1, -2.75f}, dark);
+  s.medium = {0.5f, 0.03f, 0.7f};
+  Vec3f dir = vrlis::integration::Normalize(Vec3f{1, -0.7f, 0.15f});
+  s.lights.rects.push_back({{-2.55f, 0.6f, -3.6f}, {0, 1.2f, 0}, {0, 0, 1.4f}, dir, Spectrum(10.f)});
+}
+
 }  // namespace
 
 std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverrides& o) {
@@ -102,6 +132,8 @@ std::optional<BuiltScene> BuildScene(std::string_view name, const MediumOverride
                     : name == "room"        ? Room
                     : name == "cube"        ? Cube
                     : name == "corner"      ? Corner
+                    : name == "cloud"       ? Cloud
+                    : name == "fog"         ? Fog
                                             : nullptr;
   if (!builder) return std::nullopt;
   auto geometry = std::make_shared<EmbreeGeometry>();

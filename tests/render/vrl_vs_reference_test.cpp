@@ -70,3 +70,11 @@ TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
 TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
   Run({"corner", NthSampler(3), 16, 16, 200, 64, 4096, 1.5});
 }
+
+TEST_CASE("cloud: VRL image matches the path tracer", "[render][reference]") {
+  Run({"cloud", NthSampler(4), 32, 16, 96, 32, 1024, 1.1});
+}
+
+TEST_CASE("fog: VRL image matches the path tracer", "[render][reference]") {
+  Run({"fog", NthSampler(5), 16, 8, 96, 16, 1024, 1.1});
+}

@@ -48,7 +48,7 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
                                const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr);
 
 // Single scattering along the segment from every light (point lights: the camera point by
-// `method`; collimated lights: uniform in distance). `after_vertex`: the segment leaves a
+// `method`; collimated lights: uniform in distance on the part inside the beam). `after_vertex`: the segment leaves a
 // scattering vertex that VertexSingleScattering already gathered at, so the point lights it
 // covers are left out.
 Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng,

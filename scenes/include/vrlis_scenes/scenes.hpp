@@ -1,5 +1,5 @@
 #pragma once
-// The four comparison scenes of docs/scenes.md, built on Embree (a private detail of this target).
+// The comparison scenes of docs/scenes.md, built on Embree (a private detail of this target).
 #include <array>
 #include <optional>
 #include <string_view>
@@ -9,7 +9,7 @@
 
 namespace vrlis::scenes {
 
-inline constexpr std::array<std::string_view, 4> kSceneNames = {"bidirectional", "room", "cube", "corner"};
+inline constexpr std::array<std::string_view, 6> kSceneNames = {"bidirectional", "room", "cube", "corner", "cloud", "fog"};
 
 // Overrides of a scene's medium.
 struct MediumOverrides {
