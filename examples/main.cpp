@@ -1,4 +1,4 @@
-// vrl_render: renders one of the four comparison scenes with the bidirectional VRL
+// vrl_render: renders one of the comparison scenes with the bidirectional VRL
 // pipeline (or the reference path tracer) and writes EXR, PNG and a JSON summary.
 #include <tbb/global_control.h>
 #include <tbb/info.h>

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Where the noise lives: per scene, the shares of per-pass variance and of time for each
 # part of light transport, and step one versus step two inside the medium-to-medium gather
-# (vrl_compare --decompose; about 3 minutes for the four scenes on 2 cores). Writes
+# (vrl_compare --decompose; about 5 minutes for the six scenes on 2 cores). Writes
 # out/compare/decompose/; with --publish also docs/compare/decomposition.md and its charts.
 # Other arguments go to vrl_compare (e.g. --scenes room --decompose-seconds 60).
 set -euo pipefail

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the four comparison scenes into docs/scenes/ (PNG previews and JSON summaries
+# Renders the comparison scenes into docs/scenes/ (PNG previews and JSON summaries
 # committed; EXRs kept out of git) and measures VRL gathers per second with 1 and 2
 # threads. Usage: tools/render_scenes.sh [seconds per scene, default 30] [size, default 256]
 set -euo pipefail
@@ -12,7 +12,7 @@ BIN=build/examples/vrl_render
 OUT=docs/scenes
 mkdir -p "$OUT"
 common=(--width "$SIZE" --height "$SIZE" --time "$SECONDS_PER_SCENE" --vrls 64 --seed 1 --sampler cauchy-sum --quiet)
-for scene in bidirectional room cube corner; do
+for scene in bidirectional room cube corner cloud fog; do
   "$BIN" --scene "$scene" "${common[@]}" --out "$OUT/$scene.exr" >/dev/null
 done
 for gather in m2m m2s; do
@@ -30,7 +30,7 @@ import json, sys
 out = sys.argv[1]
 print("| scene | passes | VRLs | VRL gathers | wall time (s) | gathers/s |")
 print("| --- | --- | --- | --- | --- | --- |")
-for s in ["bidirectional", "room", "cube", "corner", "corner-m2m", "corner-m2s"]:
+for s in ["bidirectional", "room", "cube", "corner", "corner-m2m", "corner-m2s", "cloud", "fog"]:
     d = json.load(open(f"{out}/{s}.json"))
     print(f"| {s} | {d['passes']} | {d['vrl_count']} | {d['gathers']} | {d['wall_time_s']:.1f} | {d['gathers_per_second']:.3g} |")
 t = [json.load(open(f"/tmp/vrl_throughput_{n}.json")) for n in (1, 2)]
