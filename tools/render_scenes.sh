@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Renders the comparison scenes into docs/scenes/ (PNG previews and JSON summaries
 # committed; EXRs kept out of git) and measures VRL gathers per second with 1 and 2
-# threads. Usage: tools/render_scenes.sh [seconds per scene, default 30] [size, default 256]
+# threads, and writes the README's gallery (docs/scenes/gallery.png).
+# Usage: tools/render_scenes.sh [seconds per scene, default 60] [size, default 192]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-SECONDS_PER_SCENE=${1:-30}
-SIZE=${2:-256}
+SECONDS_PER_SCENE=${1:-60}
+SIZE=${2:-192}
 source tools/lib.sh
 build_preset release vrl_render >/dev/null
 BIN=build/examples/vrl_render
@@ -33,6 +34,19 @@ print("| --- | --- | --- | --- | --- | --- |")
 for s in ["bidirectional", "room", "cube", "corner", "corner-m2m", "corner-m2s", "cloud", "fog"]:
     d = json.load(open(f"{out}/{s}.json"))
     print(f"| {s} | {d['passes']} | {d['vrl_count']} | {d['gathers']} | {d['wall_time_s']:.1f} | {d['gathers_per_second']:.3g} |")
+# The README's gallery: the six scenes side by side.
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.image as mpimg
+import matplotlib.pyplot as plt
+names = ["bidirectional", "room", "cube", "corner", "cloud", "fog"]
+fig, axes = plt.subplots(1, len(names), figsize=(2 * len(names), 2.3))
+for ax, s in zip(axes, names):
+    ax.imshow(mpimg.imread(f"{out}/{s}.png"))
+    ax.set_title(s, fontsize=10)
+    ax.axis("off")
+fig.tight_layout()
+fig.savefig(f"{out}/gallery.png", dpi=100)
 t = [json.load(open(f"/tmp/vrl_throughput_{n}.json")) for n in (1, 2)]
 print()
 print(f"Throughput (bidirectional, 128x128, 8 passes of 64 VRLs, cauchy-sum): "

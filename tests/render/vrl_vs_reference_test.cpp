@@ -76,5 +76,5 @@ TEST_CASE("cloud: VRL image matches the path tracer", "[render][reference]") {
 }
 
 TEST_CASE("fog: VRL image matches the path tracer", "[render][reference]") {
-  Run({"fog", NthSampler(5), 16, 8, 96, 16, 1024, 1.1});
+  Run({"fog", NthSampler(5), 16, 8, 512, 16, 2048, 1.2});
 }
