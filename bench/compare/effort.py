@@ -10,7 +10,6 @@ error against the reference over the noise (about 1 when unbiased) of every meth
 
 With --publish, also the README's sentence between its effort-summary markers."""
 import argparse
-import math
 import os
 import statistics
 import sys
@@ -18,34 +17,13 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot import load, provenance, update_readme  # noqa: E402
 import samplers  # noqa: E402  (tools/samplers.py, on the path through plot)
-from thesis import t975  # noqa: E402
 
 SUFFIX = "+effort"
 
 
-def published():
-    """The published methods the registry lists (not ours, no policy), every gather taken once."""
-    return [e["name"] for e in samplers.registry()["segment"] if not e["own"] and not e["policy"]]
-
-
-def ratio(a, b):
-    """Efficiency of a over b with a 95% interval: the study's own jackknife over replicates
-    of log((var_b x sec_b) / (var_a x sec_a)) (bench/compare/efficiency.cpp)."""
-    ra, rb = a["replicates"], b["replicates"]
-    n = len(ra["variance"])
-
-    def log_ratio(skip):
-        def mean(x):
-            kept = [v for i, v in enumerate(x) if i != skip]
-            return sum(kept) / len(kept)
-        return math.log(mean(rb["variance"]) * mean(rb["seconds"])) - math.log(mean(ra["variance"]) * mean(ra["seconds"]))
-
-    whole = log_ratio(-1)
-    loo = [log_ratio(i) for i in range(n)]
-    m = sum(loo) / n
-    se = math.sqrt(sum((x - m) ** 2 for x in loo) * (n - 1) / n)
-    half = t975(n - 1) * se
-    return math.exp(whole), math.exp(whole - half), math.exp(whole + half)
+def interval(j):
+    """(point, low, high) of a ratio the study wrote (bench/compare/efficiency.hpp)."""
+    return j["point"], j["low"], j["high"]
 
 
 def cell(r):
@@ -58,11 +36,6 @@ def studies(run):
 
 def by_name(result):
     return {s["sampler"]: s for s in result["samplers"]}
-
-
-def best_published(result):
-    s = by_name(result)
-    return max((n for n in published() if n in s), key=lambda n: s[n]["efficiency"])
 
 
 def tables(runs):
@@ -79,13 +52,13 @@ def tables(runs):
     for run in runs:
         for r in run:
             seed = r["seed"]
-            s, best = by_name(r), best_published(r)
+            s, best = by_name(r), r["best_published"]
             cells = []
             for n in names:
                 if n not in s:
                     cells.append("")
                     continue
-                x = ratio(s[n], s[best])
+                x = interval(s[n]["to_best_published"])
                 medians[n].append(x[0])
                 cells.append(("**" if x[2] < 1 else "") + cell(x) + ("**" if x[2] < 1 else ""))
                 worst_error = max(worst_error, s[n]["error_to_noise"])
@@ -96,19 +69,19 @@ def tables(runs):
     summary = []
     for n in names:
         below = sum(1 for run in runs for r in run
-                    if n in by_name(r) and ratio(by_name(r)[n], by_name(r)[best_published(r)])[2] < 1)
+                    if n in by_name(r) and by_name(r)[n]["to_best_published"]["high"] < 1)
         summary.append(f"| `{n}` | {statistics.median(medians[n]):.2f} | {below} of {len(medians[n])} |")
     gains = []
     for n in fixed:
         if n + SUFFIX in names:
-            g = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run
+            g = [by_name(r)[n + SUFFIX]["to_without_effort"]["point"] for run in runs for r in run
                  if n in by_name(r) and n + SUFFIX in by_name(r)]
             if not g:
                 continue
             gains.append(f"| `{n}` | {statistics.median(g):.2f} | {min(g):.2f}-{max(g):.2f} |")
     cells = {n: v for n, v in medians.items() if v}
     ranked = sorted((n for n in cells if n.endswith(SUFFIX)), key=lambda n: -statistics.median(cells[n]))
-    all_gains = [ratio(by_name(r)[n + SUFFIX], by_name(r)[n])[0] for run in runs for r in run for n in fixed
+    all_gains = [by_name(r)[n + SUFFIX]["to_without_effort"]["point"] for run in runs for r in run for n in fixed
                  if n in by_name(r) and n + SUFFIX in by_name(r)]
     policies = [n + SUFFIX for n in samplers.policies()]
     sentence = ""

@@ -62,9 +62,11 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
   for (const auto& s : r.samplers) {
     samplers.push_back({{"sampler", SamplerName(s.sampler)}, {"passes", s.passes}, {"seconds_per_pass", s.seconds},
                         {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_baseline", ToJson(s.to_baseline)},
+                        {"to_best_published", ToJson(s.to_best_published)},
                         {"error_to_noise", s.error_to_noise}, {"verdict", s.verdict},
                         {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}},
                         {"progression", Progressions(s.progression)}});
+    if (s.to_without_effort) samplers.back()["to_without_effort"] = ToJson(*s.to_without_effort);
     if (!vrlis::scenes::WritePng(dir + "/" + SamplerName(s.sampler) + ".png",
                               vrlis::compare::ToFilm(s.image, c.width, c.height), exposure, error))
       return false;
@@ -72,7 +74,7 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
   nlohmann::json mixture = nlohmann::json::array();
   for (auto s : c.samplers) mixture.push_back(SamplerName(s));
   nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"vrl_only", c.vrl_only}, {"margin", c.margin},
-                      {"baseline", SamplerName(vrlis::compare::kBaseline)}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
+                      {"baseline", SamplerName(vrlis::compare::kBaseline)}, {"best_published", SamplerName(r.best_published)}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
                       {"budget", c.budget}, {"replicates", c.replicates}, {"seed", c.seed},
                       {"passes_per_replicate", r.passes_per_replicate}, {"verdict", r.verdict},
                       {"top_vs_runner_up", ToJson(r.top_vs_runner_up)}, {"resolution", r.resolution},

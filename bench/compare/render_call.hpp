@@ -43,6 +43,13 @@ inline std::vector<Method> AllSamplers() {
   all.push_back({*vrlis::ParseGatherSamplers("full-product+marginal"), false});
   return all;
 }
+// A published method at fixed effort: a sampler from the literature (not ours, not a policy)
+// with Novák's step one, every gather taken once.
+inline bool IsFixedPublished(const Method& m) {
+  const auto i = static_cast<std::size_t>(m.sampler.segment.index());
+  return !m.effort && m.sampler.vrl == vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>() &&
+         !vrlis::SegmentSamplers::kOwn[i] && !vrlis::SegmentSamplers::kPolicy[i];
+}
 // Every ratio is to the registry's baseline (Novák's sampler) with Novák's step one, every
 // gather taken once.
 inline const Method kBaseline{{*vrlis::SegmentSamplers::Baseline(), vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>()}, false};

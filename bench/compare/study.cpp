@@ -192,6 +192,17 @@ StudyResult RunStudy(const StudyConfig& config) {
   }
   std::sort(widths.begin(), widths.end());
   out.resolution = widths.empty() ? 1 : widths[widths.size() / 2];
+  const SamplerResult* best = &*baseline;  // the baseline is a fixed published method
+  for (const SamplerResult& s : out.samplers)
+    if (IsFixedPublished(s.sampler) && s.efficiency > best->efficiency) best = &s;
+  out.best_published = best->sampler;
+  for (SamplerResult& s : out.samplers) {
+    s.to_best_published = EfficiencyRatio(s.replicates, best->replicates);
+    if (!s.sampler.effort) continue;
+    for (const SamplerResult& fixed : out.samplers)
+      if (fixed.sampler == Method{s.sampler.sampler, false})
+        s.to_without_effort = EfficiencyRatio(s.replicates, fixed.replicates);
+  }
   Decide(out, config.margin);
   out.reference_image = std::move(reference.mean);
   return out;

@@ -6,6 +6,7 @@
 // efficiency 1 / (variance x seconds), its ratio to Novák's with a 95% interval, and the
 // error against a mixture reference as the check that nothing is biased.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,10 @@ struct SamplerResult {
   Replicates replicates;
   double variance = 0, seconds = 0, efficiency = 0;  // pooled over the replicates
   RatioInterval to_baseline;                         // efficiency / the baseline's
+  RatioInterval to_best_published;                   // efficiency / the study's best fixed published method's
+  // Efficiency over the same sampler's without the effort control (with the control on, and
+  // that sampler in the study, only).
+  std::optional<RatioInterval> to_without_effort;
   // Mean squared error against the reference over the noise expected of both images:
   // about 1 for an unbiased sampler, clearly above 1 for a biased one.
   double error_to_noise = 0;
@@ -62,6 +67,7 @@ struct StudyResult {
   int passes_per_replicate = 0;
   std::string verdict;            // "best" or "tie"
   RatioInterval top_vs_runner_up;  // efficiency of the most efficient over the next
+  Method best_published{};         // the most efficient fixed published method (IsFixedPublished)
   double resolution = 0;          // median over samplers of (interval high / point) against the baseline
   std::vector<double> reference_image;
   int reference_passes = 0;
