@@ -1,5 +1,5 @@
 #pragma once
-// The light sources the scenes need: a point light (isotropic, or emitting along a fixed
+// The light sources the scenes need: a point light (isotropic, or emitting along a
 // Fibonacci set of beams) and a rectangle emitting a collimated beam.
 //
 // Units: a point light has intensity I (W/sr per channel), power 4 pi I; a beam light of N
@@ -15,7 +15,12 @@ namespace vrlis::integration {
 struct PointLight {
   Vec3f position{};
   Spectrum intensity{};
-  bool fibonacci_beams = false;  // light path i of N leaves along FibonacciDirection(i, N)
+  // Light path i of N leaves along FibonacciDirection(i, N), turned by one uniformly random
+  // rotation per pass: every beam is then uniform on the sphere, and the passes converge
+  // to the isotropic light's image. Without the rotation the beams are the same in every
+  // pass and the image is that of the N fixed beams.
+  bool fibonacci_beams = false;
+  bool rotate_lattice = true;
 };
 
 struct CollimatedRect {
