@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
-  std::string dump_queries, effort = "on";
+  std::string dump_queries, effort = "on", pixel_samples = "stratified";
   bool no_jitter = false, no_caustics = false, quiet = false, json = false;
 
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
@@ -129,6 +129,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--reference", reference, "A converged EXR of the same size: report the RMSE against it");
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)");
+  app.add_option("--pixel-samples", pixel_samples, "stratified: each pixel's passes at the points of a scrambled "
+                                                   "(0,2)-sequence (lower error of the mean, passes not independent); "
+                                                   "independent: a fresh uniform point per pass")
+      ->capture_default_str();
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");
   app.add_flag("--no-caustics", no_caustics, "Stop light paths at a specular surface met before any "
                                              "scattering (what a path tracer with point lights can render)");
@@ -169,6 +173,8 @@ int main(int argc, char** argv) {
   if (app.count("--time") && !(seconds > 0 && std::isfinite(seconds))) return Fail("--time must be positive");
   if (vrls < 1) return Fail("--vrls must be positive");
   if (effort != "on" && effort != "off") return Fail("unknown --effort '" + effort + "' (expected on or off)");
+  if (pixel_samples != "stratified" && pixel_samples != "independent")
+    return Fail("unknown --pixel-samples '" + pixel_samples + "' (expected stratified or independent)");
   if (threads < 0) return Fail("--threads must be >= 0");
   if (dump_every < 1) return Fail("--dump-every must be positive");
   if (!dump_queries.empty() && integrator != "vrl") return Fail("--dump-queries needs --integrator vrl");
@@ -198,6 +204,8 @@ int main(int argc, char** argv) {
   settings.height = height;
   settings.vrls_per_pass = vrls;
   settings.jitter = !no_jitter;
+  settings.pixel_samples = pixel_samples == "stratified" ? vrlis::integration::PixelSamples::Stratified
+                                                         : vrlis::integration::PixelSamples::Independent;
   settings.transport = built->transport;
   settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
@@ -266,7 +274,7 @@ int main(int argc, char** argv) {
       {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather}, {"effort", effort},
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
-      {"jitter", !no_jitter}, {"caustics", !no_caustics}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
+      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
       {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds},
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;

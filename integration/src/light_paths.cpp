@@ -10,7 +10,10 @@ struct Emission {
   Spectrum flux;
 };
 
-Emission SampleEmission(const Scene& scene, int index, int count, Rng& rng) {
+// The rotation of each point light's lattice in this pass (identity where it is fixed).
+using LatticeRotations = std::vector<Rotation>;
+
+Emission SampleEmission(const Scene& scene, const LatticeRotations& rotations, int index, int count, Rng& rng) {
   std::vector<float> powers = scene.lights.Powers();
   float total = 0;
   for (float p : powers) total += p;
@@ -22,7 +25,7 @@ Emission SampleEmission(const Scene& scene, int index, int count, Rng& rng) {
   float u1 = rng.Uniform(), u2 = rng.Uniform();
   if (k < scene.lights.points.size()) {
     const PointLight& l = scene.lights.points[k];
-    Vec3f d = l.fibonacci_beams ? FibonacciDirection(index, count)
+    Vec3f d = l.fibonacci_beams ? rotations[k](FibonacciDirection(index, count))
                                 : SphericalDirection(Frame(l.axis), 1 - u1 * (1 - l.cos_cone), 2 * kPi * u2);
     return {{l.position, d}, l.intensity * (l.SolidAngle() / (pick * count))};
   }
@@ -31,9 +34,9 @@ Emission SampleEmission(const Scene& scene, int index, int count, Rng& rng) {
   return {{l.corner + u1 * l.edge1 + u2 * l.edge2, l.direction}, l.irradiance * (power / (pick * count))};
 }
 
-void TracePath(const Scene& scene, const TransportSettings& tr, int index, int count, Rng& rng,
-               std::vector<Vrl>* out) {
-  Emission e = SampleEmission(scene, index, count, rng);
+void TracePath(const Scene& scene, const TransportSettings& tr, const LatticeRotations& rotations, int index,
+               int count, Rng& rng, std::vector<Vrl>* out) {
+  Emission e = SampleEmission(scene, rotations, index, count, rng);
   Ray ray = e.ray;
   Spectrum beta = e.flux;
   const float start = e.flux.MaxComponent();
@@ -83,12 +86,22 @@ void TracePath(const Scene& scene, const TransportSettings& tr, int index, int c
 
 }  // namespace
 
+Rotation LatticeRotation(const PointLight& light, std::uint64_t seed, std::uint64_t pass, std::size_t light_index) {
+  if (!light.rotate_lattice) return {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  Rng rng(seed, pass, light_index, StreamPurpose::LatticeRotation);
+  float u1 = rng.Uniform(), u2 = rng.Uniform(), u3 = rng.Uniform();
+  return UniformRotation(u1, u2, u3);
+}
+
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
                                  std::uint64_t seed, std::uint64_t pass) {
+  LatticeRotations rotations;
+  for (std::size_t k = 0; k < scene.lights.points.size(); ++k)
+    rotations.push_back(LatticeRotation(scene.lights.points[k], seed, pass, k));
   std::vector<std::vector<Vrl>> per_path(static_cast<std::size_t>(count));
   tbb::parallel_for(0, count, [&](int i) {
     Rng rng(seed, pass, static_cast<std::uint64_t>(i), StreamPurpose::LightPath);
-    TracePath(scene, transport, i, count, rng, &per_path[static_cast<std::size_t>(i)]);
+    TracePath(scene, transport, rotations, i, count, rng, &per_path[static_cast<std::size_t>(i)]);
   });
   std::vector<Vrl> vrls;
   for (const auto& p : per_path) vrls.insert(vrls.end(), p.begin(), p.end());

@@ -22,9 +22,16 @@ Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t see
   tbb::parallel_for(tbb::blocked_range<int>(0, s.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y) {
       for (int x = 0; x < s.width; ++x) {
-        Rng rng(seed, pass, static_cast<std::uint64_t>(y) * s.width + x, StreamPurpose::Camera);
-        float jx = s.jitter ? rng.Uniform() : 0.5f, jy = s.jitter ? rng.Uniform() : 0.5f;
-        Ray ray = scene.camera.Generate(x + jx, y + jy, s.width, s.height);
+        const std::uint64_t pixel = static_cast<std::uint64_t>(y) * s.width + x;
+        Rng rng(seed, pass, pixel, StreamPurpose::Camera);
+        PixelPoint j;
+        if (s.jitter) {
+          // The stream's first two numbers are the jitter's whichever the kind of sample,
+          // so the rest of the path meets the same numbers: the kinds differ in the jitter only.
+          j = {rng.Uniform(), rng.Uniform()};
+          if (s.pixel_samples == PixelSamples::Stratified) j = StratifiedPixelPoint(seed, pixel, pass);
+        }
+        Ray ray = scene.camera.Generate(x + j.x, y + j.y, s.width, s.height);
         film.at(x, y) = f(ray, rng, x, y);
       }
       if (s.rows_done) s.rows_done->fetch_add(1, std::memory_order_relaxed);

@@ -51,7 +51,7 @@ struct Ray {
 
 // A PCG32 stream named by (seed, pass, index, purpose): never by a thread, so images do
 // not depend on the thread count.
-enum class StreamPurpose : std::uint64_t { Camera = 1, LightPath = 2 };
+enum class StreamPurpose : std::uint64_t { Camera = 1, LightPath = 2, LatticeRotation = 3 };
 
 inline std::uint64_t SplitMix64(std::uint64_t x) {
   x += 0x9e3779b97f4a7c15ull;
@@ -92,10 +92,6 @@ inline Vec3f SphericalDirection(const Frame& f, float cos_theta, float phi) {
   return f.FromLocal(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
 }
 
-inline Vec3f SampleUniformSphere(float u1, float u2) {
-  return SphericalDirection(Frame({0, 0, 1}), 1 - 2 * u1, 2 * kPi * u2);
-}
-
 // Cosine-weighted direction about n: density max(0, n . w) / pi.
 inline Vec3f SampleCosineHemisphere(Vec3f n, float u1, float u2) {
   return SphericalDirection(Frame(n), std::sqrt(1 - u1), 2 * kPi * u2);
@@ -115,6 +111,27 @@ inline Vec3f FibonacciDirection(int i, int n) {
   const float golden = 2.39996322972865332f;  // pi (3 - sqrt 5)
   float z = 1 - (2 * i + 1) / static_cast<float>(n);
   return SphericalDirection(Frame({0, 0, 1}), z, golden * i);
+}
+
+// A rotation of 3D space, as the rows of its matrix.
+struct Rotation {
+  Vec3f row[3];
+  Vec3f operator()(Vec3f v) const { return {Dot(row[0], v), Dot(row[1], v), Dot(row[2], v)}; }
+};
+
+// A uniformly random rotation (Haar measure on SO(3)) from three uniform numbers. A unit
+// quaternion uniform on S^3 gives one, since q and -q name the same rotation and the
+// measure on S^3 is invariant under quaternion multiplication. Uniform on S^3: of the two
+// pairs of coordinates (w, z) and (x, y), the squared length of the second is uniform on
+// [0, 1] (in R^4 the two pairs' squared lengths of a Gaussian vector are i.i.d.
+// exponentials, so the ratio is uniform), and each pair's angle is uniform and independent.
+inline Rotation UniformRotation(float u1, float u2, float u3) {
+  const float a = std::sqrt(1 - u1), b = std::sqrt(u1);
+  const float t1 = 2 * kPi * u2, t2 = 2 * kPi * u3;
+  const float w = a * std::cos(t1), z = a * std::sin(t1), x = b * std::cos(t2), y = b * std::sin(t2);
+  return {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+           {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+           {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
 }
 
 }  // namespace vrlis::integration

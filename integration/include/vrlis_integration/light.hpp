@@ -1,7 +1,7 @@
 #pragma once
 // The light sources the scenes need: a point light (isotropic, a spot light with a hard
-// cone, or emitting along a fixed Fibonacci set of beams) and a rectangle emitting a
-// collimated beam.
+// cone, or emitting along a Fibonacci set of beams) and a rectangle emitting a collimated
+// beam.
 //
 // Units: a point light has intensity I (W/sr per channel), power 4 pi I, or 2 pi (1 - cos c) I
 // within a cone of half-angle c; a beam light of N beams has power 4 pi I too, split evenly.
@@ -18,14 +18,17 @@ namespace vrlis::integration {
 struct PointLight {
   Vec3f position{};
   Spectrum intensity{};
-  bool fibonacci_beams = false;  // light path i of N leaves along FibonacciDirection(i, N)
-  Vec3f axis{0, 0, -1};          // a spot light's unit axis
-  float cos_cone = -1;           // cos of its half-angle: -1 for a light emitting everywhere
+  // Light path i of N leaves along FibonacciDirection(i, N), turned by one uniformly random
+  // rotation per pass: every beam is then uniform on the sphere, and the passes converge
+  // to the isotropic light's image. Without the rotation the beams are the same in every
+  // pass and the image is that of the N fixed beams.
+  bool fibonacci_beams = false;
+  bool rotate_lattice = true;
+  Vec3f axis{0, 0, -1};  // a spot light's unit axis
+  float cos_cone = -1;   // cos of its half-angle: -1 for a light emitting everywhere
 
   // The solid angle it emits into.
   float SolidAngle() const { return 2 * kPi * (1 - cos_cone); }
-  // Whether it emits along the unit direction w.
-  bool Emits(Vec3f w) const { return cos_cone <= -1 || Dot(w, axis) >= cos_cone; }
   // Whether it emits towards p.
   bool Lights(Vec3f p) const {
     Vec3f d = p - position;

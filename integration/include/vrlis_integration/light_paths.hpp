@@ -10,6 +10,11 @@
 
 namespace vrlis::integration {
 
+// The rotation of a point light's Fibonacci lattice in pass `pass`: uniformly random from a
+// stream of its own named by (seed, pass, light), so that every renderer of a pass meets the
+// same beams; the identity for a light whose lattice is fixed.
+Rotation LatticeRotation(const PointLight& light, std::uint64_t seed, std::uint64_t pass, std::size_t light_index);
+
 // `count` light paths of one pass, each starting with flux (light power / count); the VRLs
 // come out in path order, whatever the thread count.
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
