@@ -70,7 +70,8 @@ TEST_CASE("TwoPointDirection: a ray's inverse squared distance over the density 
   for (int i = 0; i < 200; ++i) {
     V a = 3.0 * RandomDirection(rng), b = (0.1 + 4 * u(rng)) * RandomDirection(rng);
     V axis = vrlis::Normalize(b - a);
-    V w = vrlis::SampleTwoPointDirection(axis, u(rng), u(rng));
+    const double u1 = u(rng), u2 = u(rng);
+    V w = vrlis::SampleTwoPointDirection(axis, u1, u2);
     double ratio = InverseSquareAlongRay(a, w, b) / vrlis::TwoPointDirectionPdf(axis, w);
     worst = std::max(worst, std::abs(ratio * vrlis::Length(b - a) / (M_PI * M_PI * M_PI) - 1));
   }
