@@ -5,7 +5,7 @@
 # on a shared 2-core machine; the effort control's study is tools/effort.sh); prints the table with
 # 95% intervals and what each study could resolve, and writes charts under out/compare.
 #   tools/main.sh            the default study
-#   tools/main.sh --full     every scene, g in {-0.9, -0.5, 0, 0.5, 0.9}, 12 s per sampler (~30 min)
+#   tools/main.sh --full     every scene, g in {-0.9, -0.5, 0, 0.5, 0.9}, 12 s per sampler (~60 min)
 #   tools/main.sh --publish  also write docs/compare/results.md, its charts and the README table
 #   tools/main.sh --vrl-only the image of the two VRL gathers alone, as the thesis measured (out/compare-vrl;
 #                            with --publish: docs/compare/vrl_only.md, thesis_claims.md, rmse_time_*.png)

@@ -183,23 +183,26 @@ def publish_study(out, names, results, folder, command, vrl_only):
 
 
 def verdict_table(table):
-    """The README's one table, from the study's summary table: per scene and g, the sampler
-    called best, or every sampler in the tie, with its efficiency over Novak's."""
+    """The README's one table, from the study's summary table: a row per scene, a column per
+    g, each cell the sampler called best (bold), or every sampler in the tie, with its
+    efficiency over Novak's and its 95% interval."""
     rows = [[c.strip() for c in line.strip().strip("|").split("|")] for line in table.splitlines()
             if line.startswith("|") and not line.startswith("|---")]
     head, rows = rows[0], rows[1:]
     col = {name: i for i, name in enumerate(head)}
     efficiency = next(name for name in head if name.startswith("efficiency"))
-    studies = {}
+    scenes, gs, cells = [], [], {}
     for r in rows:
-        studies.setdefault((r[col["scene"]], r[col["g"]]), []).append(r)
-    lines = [f"| scene | g | verdict | sampler: {efficiency} |", "|---|---|---|---|"]
-    for (scene, g), rs in studies.items():
-        winners = [r for r in rs if r[col["verdict"]] in ("best", "tie")]
-        verdict = winners[0][col["verdict"]] if winners else "none"
-        cells = "; ".join(f"{r[col['sampler']]}: {r[col[efficiency]]}" for r in winners)
-        lines.append(f"| {scene} | {g} | {verdict} | {cells} |")
-    return "\n".join(lines) + "\n"
+        scene, g = r[col["scene"]], r[col["g"]]
+        scenes += [scene] if scene not in scenes else []
+        gs += [g] if g not in gs else []
+        if r[col["verdict"]] in ("best", "tie"):
+            name = f"**{r[col['sampler']]}**" if r[col["verdict"]] == "best" else r[col["sampler"]]
+            cells.setdefault((scene, g), []).append(f"{name} {r[col[efficiency]]}")
+    lines = [f"| scene | " + " | ".join(f"g = {g}" for g in gs) + " |", "|---|" + "---|" * len(gs)]
+    for scene in scenes:
+        lines.append(f"| {scene} | " + " | ".join("; ".join(cells.get((scene, g), ["none"])) for g in gs) + " |")
+    return "\n".join(lines) + f"\n\nEach cell: {efficiency}; **bold**: best, otherwise the samplers in the tie.\n"
 
 
 def update_readme(provenance_line, text_block, marker="compare-summary", readme="README.md"):
