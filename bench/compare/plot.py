@@ -78,8 +78,12 @@ def save(fig, folder, name, svg=True):
 def plot_efficiency(results, folder):
     """One panel per scene: efficiency / Novak's against g, one offset column per sampler."""
     scenes = list(dict.fromkeys(r["scene"] for r in results))
-    fig, axes = plt.subplots(1, len(scenes), figsize=(4.6 * len(scenes), 3.8), squeeze=False)
-    for ax, scene in zip(axes[0], scenes):
+    cols = min(3, len(scenes))
+    rows = (len(scenes) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4.6 * cols, 3.8 * rows), squeeze=False)
+    for ax in axes.flat[len(scenes):]:
+        ax.axis("off")
+    for ax, scene in zip(axes.flat, scenes):
         studies = [r for r in results if r["scene"] == scene]
         gs = [r["g"] for r in studies]
         samplers = [s["sampler"] for s in studies[0]["samplers"]]
@@ -98,15 +102,19 @@ def plot_efficiency(results, folder):
             ax.errorbar(xs, ys, yerr=[lo, hi], fmt=marker, color=colour, label=name, ms=4, capsize=2, lw=1)
         ax.axhline(1, color="black", lw=0.6)
         ax.set_yscale("log")
+        low, high = ax.get_ylim()
+        ax.set_ylim(max(low, 1e-2), min(high, 30))  # intervals wider than that run off the panel
         ax.yaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
-        ax.yaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
-        ax.tick_params(axis="y", which="minor", labelsize=7)
+        if ax.get_ylim()[1] / ax.get_ylim()[0] < 30:  # minor labels only where they do not crowd
+            ax.yaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
+            ax.tick_params(axis="y", which="minor", labelsize=7)
         ax.set_xticks(range(len(gs)))
         ax.set_xticklabels([f"g = {g:g}" for g in gs], fontsize=8)
         ax.set_ylabel(f"efficiency / {label(studies[0]['baseline'])}'s (95% interval)")
         ax.set_title(scene)
         ax.grid(True, which="both", axis="y", alpha=0.3)
-    axes[0][0].legend(fontsize=7)
+    axes.flat[0].legend(fontsize=7)
+    fig.tight_layout()
     save(fig, folder, "efficiency")
 
 
