@@ -2,7 +2,7 @@
 # Renders the comparison scenes into docs/scenes/ (PNG previews and JSON summaries
 # committed; EXRs kept out of git) and measures VRL gathers per second with 1 and 2
 # threads, and writes the README's gallery (docs/scenes/gallery.png).
-# Usage: tools/render_scenes.sh [seconds per scene, default 60] [size, default 192]
+# Usage: tools/render_scenes.sh [seconds per scene, default 60; room x6, corner x3, fog x4] [size, default 192]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_SCENE=${1:-60}
@@ -12,12 +12,17 @@ build_preset release vrl_render >/dev/null
 BIN=build/examples/vrl_render
 OUT=docs/scenes
 mkdir -p "$OUT"
-common=(--width "$SIZE" --height "$SIZE" --time "$SECONDS_PER_SCENE" --vrls 64 --seed 1 --sampler cauchy-sum --quiet)
+common=(--width "$SIZE" --height "$SIZE" --vrls 64 --seed 1 --sampler cauchy-sum --quiet)
+# Scenes whose path-traced parts converge slowly (room, corner) or whose passes are long (fog)
+# get a multiple of the time, so that every preview is converged enough to look at.
+declare -A factor=([room]=6 [corner]=3 [fog]=4)
 for scene in bidirectional room cube corner cloud fog; do
-  "$BIN" --scene "$scene" "${common[@]}" --out "$OUT/$scene.exr" >/dev/null
+  "$BIN" --scene "$scene" "${common[@]}" --time $((SECONDS_PER_SCENE * ${factor[$scene]:-1})) \
+    --out "$OUT/$scene.exr" >/dev/null
 done
 for gather in m2m m2s; do
-  "$BIN" --scene corner --gather "$gather" "${common[@]}" --out "$OUT/corner-$gather.exr" >/dev/null
+  "$BIN" --scene corner --gather "$gather" "${common[@]}" --time "$SECONDS_PER_SCENE" \
+    --out "$OUT/corner-$gather.exr" >/dev/null
 done
 rm -f "$OUT"/*.exr
 
