@@ -37,12 +37,18 @@ void Bidirectional(BuiltScene& b, EmbreeGeometry&) {
   b.transport.medium_to_surface = b.transport.direct = b.transport.indirect = false;
 }
 
+// The room of the room and fog scenes with its lower box: side walls `left` and `right`,
+// the rest `other`.
+void AddRoomAndBox(EmbreeGeometry& g, int left, int right, int other) {
+  AddRoom(g, {-2.55f, -2.5f, -4.5f}, {2.55f, 2.5f, 0.5f}, left, right, other, other, other, other);
+  g.AddBox({0.25f, -2.5f, -3.75f}, {1.75f, -1, -2.75f}, other);
+}
+
 void Room(BuiltScene& b, EmbreeGeometry& g) {
   vrlis::integration::Scene& s = b.scene;
   int grey = Diffuse(s, Spectrum(0.5f));
   int orange = Diffuse(s, {1, 0.5f, 0}), cyan = Diffuse(s, {0, 1, 1});
-  AddRoom(g, {-2.55f, -2.5f, -4.5f}, {2.55f, 2.5f, 0.5f}, orange, cyan, grey, grey, grey, grey);
-  g.AddBox({0.25f, -2.5f, -3.75f}, {1.75f, -1, -2.75f}, grey);
+  AddRoomAndBox(g, orange, cyan, grey);
   g.AddBox({-1.75f, -2.5f, -4.5f}, {-0.25f, 0.5f, -3.75f}, grey);
   s.medium = {0.01f, 0.1f, 0.5f};
   Vec3f dir = vrlis::integration::Normalize(Vec3f{-0.1f, -1, 0.075f});
@@ -116,8 +122,7 @@ void Fog(BuiltScene& b, EmbreeGeometry& g) {
   // Dark walls, as in a hall: the light the fog sends on is the fog's.
   int dark = Diffuse(s, Spectrum(0.15f));
   int orange = Diffuse(s, {0.3f, 0.15f, 0}), cyan = Diffuse(s, {0, 0.3f, 0.3f});
-  AddRoom(g, {-2.55f, -2.5f, -4.5f}, {2.55f, 2.5f, 0.5f}, orange, cyan, dark, dark, dark, dark);
-  g.AddBox({0.25f, -2.5f, -3.75f}, {1.75f, -1, -2.75f}, dark);
+  AddRoomAndBox(g, orange, cyan, dark);
   s.medium = {0.8f, 0.04f, 0.7f};
   Vec3f dir = vrlis::integration::Normalize(Vec3f{1, -0.7f, 0.15f});
   s.lights.rects.push_back({{-2.55f, 0.6f, -3.6f}, {0, 1.2f, 0}, {0, 0, 1.4f}, dir, Spectrum(10.f)});
