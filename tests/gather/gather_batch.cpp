@@ -14,12 +14,13 @@
 // camera step turns an ulp of the VRL point into percents of its density, and a fit's node
 // split into a different fit.) The VRLs are random and include the cases step one treats
 // apart: v0 before, inside and after the VRL, near-parallel lines, a VRL crossing the camera
-// line, tiny and long VRLs. A batch that mixed up lanes or random numbers fails on the first
-// sample.
+// line, tiny and long VRLs, and runs of one VRL (a split gather's samples, which share step
+// one's fit). A batch that mixed up lanes, fits or random numbers fails on the first sample.
 //
 // Medium to surface: for every VRL sampler, SampleSurfaceGathers over a surface point and n
-// VRLs returns, VRL by VRL, the one-VRL gather (SampleSurfaceGather) from the same random
-// number: the same code from the same inputs, equal to rounding.
+// VRLs (with runs of one VRL, which share a fit) returns, VRL by VRL, the one-VRL gather
+// (SampleSurfaceGather) from the same random number: the same code from the same inputs,
+// equal to rounding.
 #include <catch2/catch.hpp>
 #include <vrlis/vrlis.hpp>
 
@@ -98,7 +99,7 @@ void BatchIsOneAtATime() {
         std::vector<vrlis::VrlSegment<Real>> vrls;
         std::vector<Real> u_vrl, u_camera;
         for (int i = 0; i < n; ++i) {
-          vrls.push_back(RandomVrl<Real>(rng, i + n));
+          vrls.push_back(i % 3 == 1 ? vrls.back() : RandomVrl<Real>(rng, i + n));  // runs of a split gather
           u_vrl.push_back(uniform(rng));
           u_camera.push_back(uniform(rng));
         }
@@ -140,7 +141,7 @@ void SurfaceBatchIsOneAtATime() {
       std::vector<vrlis::VrlSegment<Real>> vrls;
       std::vector<Real> u;
       for (int i = 0; i < n; ++i) {
-        vrls.push_back(RandomVrl<Real>(rng, i + n));
+        vrls.push_back(i % 3 == 1 ? vrls.back() : RandomVrl<Real>(rng, i + n));  // runs of a split gather
         u.push_back(uniform(rng));
       }
       std::vector<vrlis::GatherSample<Real>> batch(n);

@@ -25,6 +25,13 @@ struct VrlSegment {
   Vec3<Real> at(Real v) const { return origin + v * dir; }
 };
 
+// The same VRL: a batch's split samples of one gather share its fits (gather/*_gather.hpp).
+template <typename Real>
+bool SameVrl(const VrlSegment<Real>& a, const VrlSegment<Real>& b) {
+  return a.length == b.length && a.origin.x == b.origin.x && a.origin.y == b.origin.y && a.origin.z == b.origin.z &&
+         a.dir.x == b.dir.x && a.dir.y == b.dir.y && a.dir.z == b.dir.z;
+}
+
 // A homogeneous medium: Henyey-Greenstein asymmetry, scattering and extinction coefficients.
 // Build it by name: renderers store (sigma_a, sigma_s) or (sigma_s, sigma_t), and a
 // positional {g, sigma_a, sigma_s} would be a valid medium with the wrong extinction. (The

@@ -29,7 +29,8 @@ namespace detail {
 // Samples of VRLs waiting for their batched gather: VRL index, effort weight, numbers.
 template <typename Real, int kUniforms>
 struct GatherBatch {
-  static constexpr int kSize = kVrlPointBatch;
+  // Several lanes' worth, so that a split gather's samples mostly share one fit.
+  static constexpr int kSize = 4 * kVrlPointBatch;
   VrlSegment<Real> segments[kSize];
   Real u[kUniforms][kSize];
   int source[kSize];

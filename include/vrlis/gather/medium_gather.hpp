@@ -94,7 +94,9 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // Many VRLs against one camera segment, a renderer's inner loop: out[i] is
 // SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
 // (each query valid). Step one with VrlPoint runs kVrlPointBatch VRLs at once as vector
-// lanes (SampleVrlPoints: the same numbers as one at a time, to rounding). The rest runs in
+// lanes (SampleVrlPoints: the same numbers as one at a time, to rounding); any other step one
+// is fitted once for a run of equal VRLs (a split gather's samples), which is the same density
+// and the same numbers. The rest runs in
 // phases, each a loop over the batch (camera fits, their samples, the integrands): one
 // gather is a long chain of dependent operations, the gathers of a phase are independent,
 // and a loop over them lets the processor overlap their chains, which one whole gather after
@@ -103,14 +105,19 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
                                           const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
                                           const Real* u_camera, GatherSample<Real>* out) {
+  std::optional<StepOneSampler> step_one;  // fitted for vrls[fitted]
+  int fitted = -1;
   for (int first = 0; first < count; first += kVrlPointBatch) {
     int n = std::min(kVrlPointBatch, count - first);
     SegmentSample<Real> v[kVrlPointBatch];
     if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
       SampleVrlPoints(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
     } else {
-      for (int i = 0; i < n; ++i)
-        v[i] = StepOneSampler(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first + i], medium}).sample_pdf(u_vrl[first + i]);
+      for (int i = first; i < first + n; ++i) {
+        if (fitted < 0 || !SameVrl(vrls[fitted], vrls[i]))
+          step_one.emplace(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[i], medium}), fitted = i;
+        v[i - first] = step_one->sample_pdf(u_vrl[i]);
+      }
     }
     std::optional<CameraSampler> fit[kVrlPointBatch];  // none where step one sampled nothing
     for (int i = 0; i < n; ++i) {

@@ -59,7 +59,8 @@ template <typename Sampler, typename Real>
 
 // Many VRLs seen from one surface point, a renderer's inner loop: out[i] is
 // SampleSurfaceGather for {point, normal, vrls[i], medium} with u[i] (each query valid), run
-// in phases over batches as SampleMediumGathers (fits, samples, integrands): same numbers.
+// in phases over batches as SampleMediumGathers (fits, samples, integrands), one fit for a
+// run of equal VRLs (a split gather's samples): same numbers.
 template <typename Sampler, typename Real>
 [[gnu::flatten]] void SampleSurfaceGathers(ValidQuery, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
                                            const VrlSegment<Real>* vrls, int count, const Real* u,
@@ -68,10 +69,17 @@ template <typename Sampler, typename Real>
   for (int first = 0; first < count; first += kBatch) {
     int n = std::min(kBatch, count - first);
     std::optional<Sampler> fit[kBatch];
-    for (int i = 0; i < n; ++i)
+    int fit_of[kBatch];  // the fit sample i draws from
+    for (int i = 0; i < n; ++i) {
+      if (i > 0 && SameVrl(vrls[first + i], vrls[first + fit_of[i - 1]])) {
+        fit_of[i] = fit_of[i - 1];
+        continue;
+      }
+      fit_of[i] = i;
       fit[i].emplace(ValidQuery{}, VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}));
+    }
     SegmentSample<Real> v[kBatch];
-    for (int i = 0; i < n; ++i) v[i] = fit[i]->sample_pdf(u[first + i]);
+    for (int i = 0; i < n; ++i) v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
     for (int i = 0; i < n; ++i)
       out[first + i] = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
   }
