@@ -102,6 +102,7 @@ StudyResult RunStudy(const StudyConfig& config) {
   overrides.g = config.g;
   StudyScene scene = BuildStudyScene(config.scene, overrides, config.width, config.height, config.vrls);
   if (config.vrl_only) KeepVrlGathersOnly(scene);
+  scene.settings.transport.effort.floor = config.effort_floor;
   PassRenderer renderer(scene.built.scene, scene.settings);
   const std::size_t values = 3 * static_cast<std::size_t>(config.width) * static_cast<std::size_t>(config.height);
   const auto replicates = static_cast<std::size_t>(config.replicates);

@@ -35,6 +35,8 @@ struct StudyConfig {
   // The image of the two VRL gathers alone (medium-to-medium and medium-to-surface), as the
   // thesis and Novák et al. 2012 measure, instead of the scene's whole transport.
   bool vrl_only = false;
+  // The effort control's floor of q for the methods with it on (vrlis::EffortSettings::floor).
+  double effort_floor = vrlis::EffortSettings{}.floor;
 };
 
 // How one replicate converged: after each of its passes, the seconds spent so far and the

@@ -21,7 +21,10 @@ namespace vrlis {
 struct EffortSettings {
   bool on = false;
   double price = 0;
-  double floor = 0.05;   // the largest roulette weight is 1 / floor (EARS's bounds)
+  // The largest roulette weight is 1 / floor. EARS clamps at 0.05; 0.01 halves a room pass
+  // whose gathers carry no variance and changes no measured scene where they do
+  // (docs/maths.md#effort).
+  double floor = 0.01;
   double ceiling = 20;   // at most this many samples of one gather
   // The share of a gather's second moment that splitting reduces: its variance given the VRL
   // and the camera segment, over its second moment (the rest is the VRL's and the path's,
