@@ -1,19 +1,22 @@
 #!/usr/bin/env bash
 # The effort control's study: every sampler of the equal-time study, each also with the effort
 # control on (vrl_compare --with-effort): the default study (bidirectional and room,
-# g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, then cube and corner at g in {-0.9, 0.5} with
-# seed 1 (~45 minutes on a shared 2-core machine); bench/compare/effort.py tables every method
+# g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, then cube, corner, cloud and fog at g in {-0.9, 0.5}
+# with seed 1 (~50 minutes at --budget 4 on a shared 2-core machine); bench/compare/effort.py tables every method
 # against the best fixed published sampler.
 #   tools/effort.sh            writes out/effort/{seed1,seed2,other} and prints the tables
 #   tools/effort.sh --publish  also writes docs/compare/effort.md
-# Other arguments go to every vrl_compare run, e.g. --budget 4.
+# Other arguments go to every vrl_compare run, e.g. --budget 4. Every run renders at least 8
+# passes per replicate: the control decides from its third pass, and fog's passes are so long
+# that the budget alone gives it two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/lib.sh
 prepare_vrl_compare "$@"
+study=(build/bench/compare/vrl_compare --with-effort --min-passes 8)
 for seed in 1 2; do
-  build/bench/compare/vrl_compare --with-effort --seed "$seed" --out "out/effort/seed$seed" "${args[@]}"
+  "${study[@]}" --seed "$seed" --out "out/effort/seed$seed" "${args[@]}"
 done
-build/bench/compare/vrl_compare --with-effort --scenes cube,corner --g -0.9,0.5 --seed 1 --out out/effort/other "${args[@]}"
+"${study[@]}" --scenes cube,corner,cloud,fog --g -0.9,0.5 --seed 1 --out out/effort/other "${args[@]}"
 /usr/bin/python3 bench/compare/effort.py out/effort/seed1 out/effort/seed2 out/effort/other \
   ${publish:+--publish "$publish/effort.md"} --command "tools/effort.sh${*:+ $*}"

@@ -75,7 +75,7 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
   for (auto s : c.samplers) mixture.push_back(SamplerName(s));
   nlohmann::json j = {{"scene", c.scene}, {"g", c.g}, {"vrl_only", c.vrl_only}, {"margin", c.margin},
                       {"baseline", SamplerName(vrlis::compare::kBaseline)}, {"best_published", SamplerName(r.best_published)}, {"width", c.width}, {"height", c.height}, {"vrls", c.vrls},
-                      {"budget", c.budget}, {"effort_floor", c.effort_floor}, {"replicates", c.replicates}, {"seed", c.seed},
+                      {"budget", c.budget}, {"min_passes", c.min_passes}, {"effort_floor", c.effort_floor}, {"replicates", c.replicates}, {"seed", c.seed},
                       {"passes_per_replicate", r.passes_per_replicate}, {"verdict", r.verdict},
                       {"top_vs_runner_up", ToJson(r.top_vs_runner_up)}, {"resolution", r.resolution},
                       {"sampler_noise", r.sampler_noise}, {"samplers", samplers},
@@ -163,6 +163,8 @@ int main(int argc, char** argv) {
   app.add_option("--scenes", scenes, "Scenes (" + scene_names + ")")->delimiter(',')->capture_default_str();
   app.add_option("--g", gs, "Henyey-Greenstein g values, each in (-1, 1)")->delimiter(',')->capture_default_str();
   app.add_option("--samplers", sampler_names, "Camera samplers, the baseline " + SamplerName(vrlis::compare::kBaseline) + " among them (default: all)")->delimiter(',');
+  app.add_option("--min-passes", base.min_passes, "Passes per replicate, at least, whatever the budget (>= 2)")
+      ->capture_default_str();
   app.add_option("--effort-floor", base.effort_floor, "The effort control's floor of q, in (0, 1]: its largest roulette weight is 1 / floor")
       ->capture_default_str();
   app.add_option("--budget", base.budget, "Seconds of passes per sampler and study, at least")->capture_default_str();
@@ -206,6 +208,7 @@ int main(int argc, char** argv) {
   for (float g : gs)
     if (!(g > -1 && g < 1)) return Fail("--g values must lie in (-1, 1)");
   if (!(base.budget > 0) || !(base.budget < 1e6)) return Fail("--budget must be a positive number of seconds");
+  if (base.min_passes < 2) return Fail("--min-passes must be at least 2");
   if (!(base.effort_floor > 0) || !(base.effort_floor <= 1)) return Fail("--effort-floor must be in (0, 1]");
   if (!(reference_factor > 0) || !(reference_factor < 1e3)) return Fail("--reference-factor must be in (0, 1000)");
   if (!(decompose_seconds > 0) || !(step_seconds > 0) || decompose_seconds > 1e6 || step_seconds > 1e6)

@@ -123,18 +123,18 @@ StudyResult RunStudy(const StudyConfig& config) {
                            replicates, vrlis::integration::EffortPrice(config.width, config.height))});
 
   // Whole cycles (one pass of every replicate) so that all replicates of a sampler hold the
-  // same number of passes, at least two, for a variance within each. A sampler stops once it
+  // same number of passes, at least min_passes. A sampler stops once it
   // has spent its budget (or, while the study is undecided, the extended one): the others'
   // passes go on, so a sampler 20x faster than another does not keep the slow one rendering.
   std::size_t round = 0;
   auto spent = [&](const Runner& r) { return std::accumulate(r.seconds.begin(), r.seconds.end(), 0.0); };
   auto target = [&] {
     const bool short_of_budget = std::any_of(runners.begin(), runners.end(), [&](const Runner& r) {
-      return r.per_replicate < 2 || spent(r) < config.budget;
+      return r.per_replicate < config.min_passes || spent(r) < config.budget;
     });
     return !short_of_budget && Undecided(runners, config.margin) ? config.extension * config.budget : config.budget;
   };
-  auto wants = [&](const Runner& r, double seconds) { return r.per_replicate < 2 || spent(r) < seconds; };
+  auto wants = [&](const Runner& r, double seconds) { return r.per_replicate < config.min_passes || spent(r) < seconds; };
   for (double goal = config.budget;
        std::any_of(runners.begin(), runners.end(), [&](const Runner& r) { return wants(r, goal); });
        goal = target()) {

@@ -21,6 +21,9 @@ struct StudyConfig {
   int width = 48, height = 48;
   int vrls = 32;                  // light paths per pass
   double budget = 8;              // seconds per sampler, at least
+  // Passes per replicate, at least, whatever the budget: two for a variance within each; the
+  // effort control decides from its third pass, so where passes are long its study asks for more.
+  int min_passes = 2;
   int replicates = 12;
   // "best" needs the interval against the runner-up above this: the interval sees the spread
   // between replicates, not the drift of a shared machine's timings from one run to the next.
