@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
-# Builds vrlis_stability (tests/stability) and vrlis_accuracy (bench; the `release` preset)
-# and writes the stability tables of the samplers as Markdown to stdout and to
+# Builds vrlis_stability (tests/stability), vrlis_accuracy and vrl_compare (bench; the `release`
+# preset) and writes the stability tables of the samplers as Markdown to stdout and to
 # docs/stability.md (with the date, machine and command): the hard cases, then the largest
 # weight of every gather method on each scene's dumped queries (docs/accuracy_scenes/*.qlog,
-# written by tools/accuracy_scenes.sh).
+# written by tools/accuracy_scenes.sh), then the effort weights and largest samples of the
+# renderer's own gathers (about a minute on 2 cores).
 # Usage: tools/stability.sh [samples=100000]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 samples="${1:-100000}"
 source tools/lib.sh
-build_preset release vrlis_stability vrlis_accuracy >/dev/null
+build_preset release vrlis_stability vrlis_accuracy vrl_compare >/dev/null
 tool=build/tests/stability/vrlis_stability
 accuracy=build/bench/vrlis_accuracy
+compare=build/bench/compare/vrl_compare
 grid=32
+weights=(--gather-weights --width 48 --height 48 --vrls 32 --passes 40 --seed 1)
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 {
@@ -77,6 +80,24 @@ print("|---|---|---|" + "---|" * len(methods))
 for _, g, scene, j in runs:
     print(f"| {scene} | {g:g} | {j['records']} | " + " | ".join(f"{j['largest_weight'][m]:.3g}" for m in methods) + " |")
 TABLE
+  echo
+  echo '<a id="effort-weights"></a>'
+  echo "## The renderer's gathers: effort weights and the largest samples"
+  echo
+  echo "Every VRL gather sample taken in one render per scene, each at its default g, by \`cauchy-sum\` (the"
+  echo "renderer's default) and \`auto\`, the effort control off and on (\`+effort\`): ${weights[2]} x ${weights[4]} pixels,"
+  echo "${weights[6]} light paths a pass, passes 2 to ${weights[8]} (the first takes every gather once to price them and is not"
+  echo "recorded), recorded by integration/include/vrlis_integration/weight_log.hpp"
+  echo "(\`$compare ${weights[*]}\`)."
+  echo "The effort weight is 1 / q, the call's rate included ([maths.md](maths.md#effort)): roulette"
+  echo "raises it above 1, the floor bounds it by 1 / floor. A sample's contribution is what the renderer adds"
+  echo "to its pixel (RMS of RGB: effort weight x the sample's weight f / pdf x flux x throughput), over the"
+  echo "image's mean pixel value (RMS of RGB, over the pixels and all passes): not over its own pixel's mean,"
+  echo "which holds the sample, so that ratio could not exceed the number of passes. The quantile is over the"
+  echo "samples taken, rounded up by under 0.8% (bins 1/128 of an octave wide); non-finite counts the samples"
+  echo "whose effort weight, weight or contribution is not finite."
+  echo
+  "$compare" "${weights[@]}" --out "$scratch/gather_weights"
 } > docs/stability.md.tmp
 mv docs/stability.md.tmp docs/stability.md
 cat docs/stability.md

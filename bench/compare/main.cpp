@@ -3,9 +3,10 @@
 // of each (1 / (per-pass variance x seconds per pass)) relative to Novák's with a 95%
 // interval, a verdict that says "best" only when the interval separates the winner from the
 // runner-up, and the error against a mixture reference. With --decompose: where each
-// scene's noise lives instead. Writes under --out (one folder per study, summary.md and
-// summary.json; or decompose/<scene>.json) and prints the table. Every argument is checked
-// before anything is written.
+// scene's noise lives instead; with --gather-weights: the tails of the gather samples'
+// weights. Writes under --out (one folder per study, summary.md and summary.json; or
+// decompose/<scene>.json; or gather_weights.json) and prints the table. Every argument is
+// checked before anything is written.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include <tbb/global_control.h>
 
 #include "decompose.hpp"
+#include "gather_weights.hpp"
 #include <vrlis_scenes/image_io.hpp>
 #include "image_stats.hpp"
 #include <vrlis_scenes/scenes.hpp>
@@ -138,6 +140,16 @@ nlohmann::json DecompositionJson(const DecomposeResult& d) {
                      {"step_one", ToJson(d.step_one)}, {"gathers", gathers}}}};
 }
 
+nlohmann::json GatherWeightsJson(const vrlis::compare::GatherWeightsResult& r) {
+  const vrlis::compare::GatherWeightsConfig& c = r.config;
+  return {{"scene", c.scene}, {"g", r.g}, {"method", SamplerName(c.method)}, {"width", c.width},
+          {"height", c.height}, {"vrls", c.vrls}, {"passes", c.passes}, {"seed", c.seed},
+          {"effort_floor", c.effort_floor}, {"samples", r.samples}, {"non_finite", r.non_finite},
+          {"largest_effort_weight", r.largest_effort_weight}, {"mean_pixel", r.mean_pixel},
+          {"largest_contribution", r.largest_contribution}, {"quantile", vrlis::compare::kGatherWeightsQuantile},
+          {"quantile_contribution", r.quantile_contribution}, {"seconds", r.seconds}};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -145,10 +157,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> scenes = {"bidirectional", "room"};
   std::vector<float> gs = {-0.9f, 0.5f, 0.9f};
   std::vector<std::string> sampler_names;
-  bool full = false, decompose = false, with_effort = false, segment_scattering = false;
+  bool full = false, decompose = false, with_effort = false, segment_scattering = false, gather_weights = false;
   StudyConfig base;
   double reference_factor = 2, decompose_seconds = 20, step_seconds = 15;
-  int threads = 2;
+  int threads = 2, passes = vrlis::compare::GatherWeightsConfig{}.passes;
   std::string out = "out/compare";
   app.add_flag("--full", full, "Every scene, g in {-0.9,-0.5,0,0.5,0.9}, budget 12 s (the published run)");
   app.add_flag("--vrl-only", base.vrl_only, "The image of the two VRL gathers alone (medium-to-medium and "
@@ -158,6 +170,10 @@ int main(int argc, char** argv) {
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
   app.add_flag("--segment-scattering", segment_scattering, "--decompose: path-traced parts estimate point-light "
                "single scattering along each segment, not jointly at the vertex before it");
+  app.add_flag("--gather-weights", gather_weights, "The tails of the gather samples' weights, each scene at its "
+               "default g, each sampler (default cauchy-sum, auto) with the effort control off and on");
+  app.add_option("--passes", passes, "--gather-weights: passes per scene and method, >= 2 (the first, which "
+                 "takes every gather once to price them, is not recorded)")->capture_default_str();
   std::string scene_names;
   for (auto n : vrlis::scenes::kSceneNames) scene_names += (scene_names.empty() ? "" : ", ") + std::string(n);
   app.add_option("--scenes", scenes, "Scenes (" + scene_names + ")")->delimiter(',')->capture_default_str();
@@ -197,7 +213,17 @@ int main(int argc, char** argv) {
   }
   if (decompose && base.vrl_only) return Fail("--decompose splits the whole transport; it does not take --vrl-only");
   if (segment_scattering && !decompose) return Fail("--segment-scattering is an option of --decompose");
-  if (decompose && app.count("--scenes") == 0)
+  if (gather_weights && (decompose || base.vrl_only || full))
+    return Fail("--gather-weights takes neither --decompose, --vrl-only nor --full");
+  if (gather_weights && app.count("--g") > 0)
+    return Fail("--gather-weights renders every scene at its default g; it does not take --g");
+  if (app.count("--passes") > 0 && !gather_weights) return Fail("--passes is an option of --gather-weights");
+  if (passes < 2 || passes > 100000) return Fail("--passes must be in [2, 100000]");
+  if (gather_weights) {
+    if (sampler_names.empty()) sampler_names = {"cauchy-sum", "auto"};
+    with_effort = true;
+  }
+  if ((decompose || gather_weights) && app.count("--scenes") == 0)
     scenes.assign(vrlis::scenes::kSceneNames.begin(), vrlis::scenes::kSceneNames.end());
 
   // Every argument is checked here, before anything is written.
@@ -234,8 +260,9 @@ int main(int argc, char** argv) {
         vrlis::compare::Method m{base.samplers[i].sampler, true};
         if (std::find(base.samplers.begin(), base.samplers.end(), m) == base.samplers.end()) base.samplers.push_back(m);
       }
-  if (std::find(base.samplers.begin(), base.samplers.end(), vrlis::compare::kBaseline) == base.samplers.end() ||
-      base.samplers.size() < 2)
+  if (!gather_weights &&
+      (std::find(base.samplers.begin(), base.samplers.end(), vrlis::compare::kBaseline) == base.samplers.end() ||
+       base.samplers.size() < 2))
     return Fail("--samplers must name " + SamplerName(vrlis::compare::kBaseline) + " (every ratio is to it) and at least one other");
   if (std::set<float>(gs.begin(), gs.end()).size() != gs.size() ||
       std::set<std::string>(scenes.begin(), scenes.end()).size() != scenes.size())
@@ -275,6 +302,33 @@ int main(int argc, char** argv) {
       return Fail(e.what());
     }
     if (!vrlis::scenes::WriteText(out + "/decompose/scenes.json", index.dump(2) + "\n", &error)) return Fail(error);
+    return 0;
+  }
+
+  if (gather_weights) {
+    std::vector<vrlis::compare::GatherWeightsResult> results;
+    nlohmann::json rows = nlohmann::json::array();
+    try {
+      for (const std::string& scene : scenes)
+        for (const vrlis::compare::Method& m : base.samplers) {
+          vrlis::compare::GatherWeightsConfig c;
+          c.scene = scene;
+          c.method = m;
+          c.width = base.width;
+          c.height = base.height;
+          c.vrls = base.vrls;
+          c.passes = passes;
+          c.seed = base.seed;
+          c.effort_floor = base.effort_floor;
+          std::fprintf(stderr, "%s %s: %d passes ...\n", scene.c_str(), SamplerName(m).c_str(), passes);
+          results.push_back(vrlis::compare::MeasureGatherWeights(c));
+          rows.push_back(GatherWeightsJson(results.back()));
+        }
+    } catch (const std::exception& e) {
+      return Fail(e.what());
+    }
+    if (!vrlis::scenes::WriteText(out + "/gather_weights.json", rows.dump(2) + "\n", &error)) return Fail(error);
+    std::printf("%s", vrlis::compare::GatherWeightsTable(results).c_str());
     return 0;
   }
 

@@ -57,7 +57,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         {
           Timer timer(effort.on, &stats.seconds);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
-                                                 effort.on ? &stats : nullptr);
+                                                 effort.on ? &stats : nullptr, tr.weight_log);
         }
         if (effort.on) AddCall(effort, gathered, &stats);
         L += gathered;
@@ -95,7 +95,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       {
         Timer timer(effort.on, &stats.seconds);
         gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
-                                                effort, effort.on ? &stats : nullptr);
+                                                effort, effort.on ? &stats : nullptr, tr.weight_log);
       }
       if (effort.on) AddCall(effort, gathered, &stats);
       L += gathered;

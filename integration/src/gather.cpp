@@ -48,7 +48,7 @@ constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
 template <typename GatherChunk>
 Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput, EffortStats* stats,
-                       GatherChunk&& gather_chunk) {
+                       WeightLog* weight_log, GatherChunk&& gather_chunk) {
   Spectrum sum;
   vrlis::EffortTally tally;
   EffortStats taken;
@@ -65,6 +65,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
       Spectrum x = chunk[i].flux * (Connect(scene, s) * effort_weight);
       sum += x;
+      if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
       if (!stats) return;
       ++taken.gathers;
       double y = (throughput * x).Rms() / effort_weight;
@@ -90,14 +91,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
 // The medium-to-medium sum over the VRLs [first, last).
 Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput,
-                    const vrlis::EffortSettings& effort, EffortStats* stats) {
+                    const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
   if (log)
     for (const Vrl* vrl = first; vrl != last; ++vrl)
       log->Record({camera, SegmentOf(*vrl), medium}, (throughput * vrl->flux).Rms());
-  return SumOverChunks(scene, first, last, throughput, stats,
+  return SumOverChunks(scene, first, last, throughput, stats, weight_log,
                        [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
                            vrlis::EffortTally* tally) {
                          vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
@@ -109,21 +110,22 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
-  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr);
+  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr);
 }
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput,
-                              const vrlis::EffortSettings& effort, EffortStats* stats) {
-  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats);
+                              const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log) {
+  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats,
+                    weight_log);
 }
 
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
-                               const vrlis::EffortSettings& effort, EffortStats* stats) {
+                               const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log) {
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
-  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, stats,
+  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, stats, weight_log,
                                 [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
                                     auto& connect, vrlis::EffortTally* tally) {
                                   vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,

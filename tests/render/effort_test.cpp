@@ -9,6 +9,8 @@
 //   gathers taken stay at or above one per VRL;
 // - a call of gathers is taken at the floor's rate where its gathers carry no variance (room)
 //   and mostly taken where they carry it all (bidirectional);
+// - roulette raises the samples' weights and the floor bounds them: in room the largest effort
+//   weight exceeds 1 and is at most 1 / floor, every weight finite; recording them changes no image;
 // - the controlled image's mean is the uncontrolled one's: per 4 x 4 block of the
 //   bidirectional scene (where roulette and splitting act most) and of room (where whole calls
 //   are rouletted), z-scores within a Bonferroni bound.
@@ -20,6 +22,7 @@
 
 #include <optional>
 
+#include <vrlis_integration/weight_log.hpp>
 #include <vrlis_scenes/scenes.hpp>
 
 #include "block_stats.hpp"
@@ -110,6 +113,26 @@ TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor'
   INFO("mean rate of a medium-to-medium call after 5 passes: room " << room << ", bidirectional " << bidirectional);
   CHECK(room < 1.5 * vrlis::EffortSettings{}.floor);
   CHECK(bidirectional > 0.5);
+}
+
+TEST_CASE("effort: roulette's largest weight is above one and at most 1 / floor", "[render][effort]") {
+  auto built = vrlis::scenes::BuildScene("room", {});
+  REQUIRE(built);
+  vrlis::integration::WeightLog log;
+  vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+  s.transport.weight_log = &log;
+  vrlis::integration::VrlRenderer r(built->scene, s);
+  for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
+  const float largest = log.largest_effort_weight();
+  INFO(log.samples() << " samples, largest effort weight " << largest << ", " << log.non_finite() << " not finite");
+  CHECK(log.non_finite() == 0);
+  CHECK(largest > 1);
+  CHECK(largest <= static_cast<float>(1 / s.transport.effort.floor));
+  // With the control off (a pass of (seed, pass) alone) recording changes nothing.
+  s.transport.effort.on = false;
+  const vrlis::integration::Film logged = vrlis::integration::VrlRenderer(built->scene, s).RenderPass(1, 0, nullptr);
+  s.transport.weight_log = nullptr;
+  CHECK(Same(logged, vrlis::integration::VrlRenderer(built->scene, s).RenderPass(1, 0, nullptr)));
 }
 
 TEST_CASE("effort keeps the image's mean", "[render][effort]") {

@@ -10,6 +10,7 @@
 #include "query_log.hpp"
 #include "scene.hpp"
 #include "vrl.hpp"
+#include "weight_log.hpp"
 
 namespace vrlis::integration {
 
@@ -29,11 +30,12 @@ Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, 
 // The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
 // order: the camera pass's inner loop, one call of the library's GatherMediumVrls. With the
 // effort control (vrlis/gather/effort.hpp) each VRL is gathered q times on average, q from its
-// predicted contribution throughput x flux; `stats`, if set, adds what the price learns from.
+// predicted contribution throughput x flux; `stats`, if set, adds what the price learns from;
+// `weight_log`, if set, records every sample taken (weight_log.hpp).
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
                               Spectrum throughput = Spectrum(1.f), const vrlis::EffortSettings& effort = {},
-                              EffortStats* stats = nullptr);
+                              EffortStats* stats = nullptr, WeightLog* weight_log = nullptr);
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
@@ -42,10 +44,11 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
 // each): the sampler is chosen and the point and medium validated once for all the VRLs
-// (the library's GatherSurfaceVrls; effort and stats as in GatherMediumToMedium).
+// (the library's GatherSurfaceVrls; effort, stats and weight_log as in GatherMediumToMedium).
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput = Spectrum(1.f),
-                               const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr);
+                               const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr,
+                               WeightLog* weight_log = nullptr);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance on the part inside the beam). `after_vertex`: the segment leaves a

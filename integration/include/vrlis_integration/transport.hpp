@@ -7,6 +7,7 @@
 namespace vrlis::integration {
 
 class QueryLog;
+class WeightLog;
 
 struct TransportSettings {
   // How every VRL gather samples: step one and step two of the medium-to-medium gather; the
@@ -31,6 +32,7 @@ struct TransportSettings {
   int max_depth = 100;              // interactions per path (camera or light side)
   int rr_depth = 3;                 // Russian roulette from this depth on
   QueryLog* query_log = nullptr;    // if set, records a sample of the medium-to-medium gathers
+  WeightLog* weight_log = nullptr;  // if set, records the weights of every VRL gather sample taken
   // The effort control of both VRL gathers (off: every VRL gathered once); its price is the
   // renderer's, learned pass by pass (effort_price.hpp).
   vrlis::EffortSettings effort;
