@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The effort control's study: every sampler of the equal-time study, each also with the effort
-# control on (vrl_compare --with-effort): the default study (bidirectional and room,
-# g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, then cube, corner, cloud and fog at g in {-0.9, 0.5}
-# with seed 1 (~50 minutes at --budget 4 on a shared 2-core machine); bench/compare/effort.py tables every method
-# against the best fixed published sampler.
-#   tools/effort.sh            writes out/effort/{seed1,seed2,other} and prints the tables
+# control on (vrl_compare --with-effort), in every scene at every g of the --full study: the
+# default study (bidirectional and room, g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, then cube,
+# corner, cloud and fog at g in {-0.9, 0.5}, then every scene at its remaining g, with seed 1
+# (~95 minutes at --budget 4 on a shared 2-core machine); bench/compare/effort.py tables every
+# method against the best fixed published sampler.
+#   tools/effort.sh            writes out/effort/{seed1,seed2,other,rest,rest-other} and prints the tables
 #   tools/effort.sh --publish  also writes docs/compare/effort.md
 # Other arguments go to every vrl_compare run, e.g. --budget 4. Every run renders at least 8
 # passes per replicate: the control decides from its third pass, and fog's passes are so long
@@ -18,5 +19,7 @@ for seed in 1 2; do
   "${study[@]}" --seed "$seed" --out "out/effort/seed$seed" "${args[@]}"
 done
 "${study[@]}" --scenes cube,corner,cloud,fog --g -0.9,0.5 --seed 1 --out out/effort/other "${args[@]}"
-/usr/bin/python3 bench/compare/effort.py out/effort/seed1 out/effort/seed2 out/effort/other \
+"${study[@]}" --scenes bidirectional,room --g -0.5,0 --seed 1 --out out/effort/rest "${args[@]}"
+"${study[@]}" --scenes cube,corner,cloud,fog --g -0.5,0,0.9 --seed 1 --out out/effort/rest-other "${args[@]}"
+/usr/bin/python3 bench/compare/effort.py out/effort/seed1 out/effort/seed2 out/effort/other out/effort/rest out/effort/rest-other \
   ${publish:+--publish "$publish/effort.md"} --command "tools/effort.sh${*:+ $*}"

@@ -112,7 +112,7 @@ def main():
         "Russian roulette and splitting of every VRL gather by a price of variance learned from earlier "
         "passes, [../maths.md](../maths.md#effort); `auto+effort` also chooses both steps' models by it, "
         "[../maths.md](../maths.md#effort-models)): the default study (bidirectional scene and room, "
-        "g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, and cube, corner, cloud and fog at g in {-0.9, 0.5} with seed 1. "
+        "g in {-0.9, 0.5, 0.9}) with seeds 1 and 2, and every scene at every g in {-0.9, -0.5, 0, 0.5, 0.9} with seed 1. "
         "Each cell is the method's efficiency over that study's best "
         "fixed published sampler (equiangular, Novák, CauchySum, CauchyMixture, every gather taken once) "
         "with its 95% interval; **bold**: the interval lies below 1.",
