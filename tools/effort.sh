@@ -8,8 +8,8 @@
 #   tools/effort.sh            writes out/effort/{seed1,seed2,other,rest,rest-other} and prints the tables
 #   tools/effort.sh --publish  also writes docs/compare/effort.md
 # Other arguments go to every vrl_compare run, e.g. --budget 4. Every run renders at least 8
-# passes per replicate: the control decides from its third pass, and fog's passes are so long
-# that the budget alone gives it two.
+# passes per replicate: the control decides from its second pass on a price that settles over
+# the next few, and fog's passes are so long that the budget alone gives it two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/lib.sh

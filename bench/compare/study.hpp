@@ -22,7 +22,8 @@ struct StudyConfig {
   int vrls = 32;                  // light paths per pass
   double budget = 8;              // seconds per sampler, at least
   // Passes per replicate, at least, whatever the budget: two for a variance within each; the
-  // effort control decides from its third pass, so where passes are long its study asks for more.
+  // effort control decides from its second pass on a price that settles over the next few, so
+  // where passes are long its study asks for more.
   int min_passes = 2;
   int replicates = 12;
   // "best" needs the interval against the runner-up above this: the interval sees the spread
