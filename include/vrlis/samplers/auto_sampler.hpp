@@ -13,6 +13,7 @@
 // cheap: the segment lobe is monotone in theta (its cosine is -sin theta), the point lobe is
 // extreme at the interval's ends or at its peak or antipode when inside, and the
 // transmittance falls monotonically from tmin to tmax.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -111,6 +112,41 @@ Real UniformVarianceBound(Real rho) {
   return std::isfinite(rho) ? Sqr(rho - 1) / (4 * rho) : std::numeric_limits<Real>::infinity();
 }
 
+// e^z E1(z) for z > 0 in the form 1 - z e^z E1(z) (Abramowitz and Stegun 5.1.53 below one,
+// 5.1.56 above, both within 5e-5), which falls from 1 at 0 like 1 / z at infinity.
+inline double ExponentialIntegralComplement(double z) {
+  if (z < 1) {
+    double e1 = -std::log(z) - 0.57721566 +
+                z * (0.99999193 + z * (-0.24991055 + z * (0.05519968 + z * (-0.00976004 + z * 0.00107857))));
+    return 1 - z * std::exp(z) * e1;
+  }
+  return (0.995924 * z + 1.430913) / (z * (z + 3.330657) + 1.681534);
+}
+
+// The transmittance's own second moment under equiangular sampling, W Int T^2 / (Int T)^2
+// over the angle interval of width W, on an unbounded segment (where its ratio is infinite).
+// With the half-angle u = pi/2 - chi/2 and tan(chi/2) = cot u ~ 1/u, the optical depth is
+// sigma_t h (1/u - 1/U) on u in (0, U], U = W / 2, and Int_0^U e^(-c (1/u - 1/U)) du =
+// U (1 - z e^z E1(z)), z = c / U: the moment is C(2z) / C(z)^2 with z = 2 sigma_t h / W
+// (docs/maths.md#auto). A prediction (cot u < 1/u puts it a little low where z is large), not a bound.
+template <typename Real>
+double UnboundedTransmittanceMoment(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
+  double z = 2 * double(q.sigma_t) * double(dom.h()) / double(dom.width());
+  if (!(z > 0)) return 1;
+  if (!std::isfinite(z)) return std::numeric_limits<double>::infinity();
+  return std::max(1.0, ExponentialIntegralComplement(2 * z) / Sqr(ExponentialIntegralComplement(z)));
+}
+
+// The transmittance's factor in the models' second moments: Kantorovich's 1 + B(rho_T) on a
+// bounded segment, the moment above on an unbounded one.
+template <typename Real>
+double TransmittanceMoment(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
+  if (std::isfinite(q.tmax) || !(q.sigma_t > 0)) {
+    return 1 + UniformVarianceBound(double(TransmittanceRangeRatio(q)));
+  }
+  return UnboundedTransmittanceMoment(q, dom);
+}
+
 // The models `auto` chooses from, cheapest first.
 enum class AutoModel { Equiangular, Novak, FullProduct };
 
@@ -127,11 +163,10 @@ struct AutoRule {
   static constexpr double kFitResidual = 0.05;
 
   // Predicted (1 + relative variance) x cost of each model, from equiangular's predicted
-  // second moment W Int f^2 / (Int f)^2 and the transmittance's ratio.
-  static std::array<double, 3> Scores(double equiangular_moment, double transmittance_ratio) {
+  // second moment W Int f^2 / (Int f)^2 and the transmittance's (TransmittanceMoment).
+  static std::array<double, 3> Scores(double equiangular_moment, double transmittance_moment) {
     double fit = 1 + kFitResidual;
-    return {equiangular_moment * kCost[0], (1 + UniformVarianceBound(transmittance_ratio)) * fit * kCost[1],
-            fit * kCost[2]};
+    return {equiangular_moment * kCost[0], transmittance_moment * fit * kCost[1], fit * kCost[2]};
   }
   static AutoModel Cheapest(const std::array<double, 3>& score) {
     std::size_t best = 0;
@@ -139,26 +174,34 @@ struct AutoRule {
       if (score[k] < score[best]) best = k;  // ties keep the cheaper model
     return AutoModel(best);
   }
-  // The early-outs, which look at no lobe and never change a decision. Every prediction of
-  // equiangular's second moment is at least 1 + B(rho_T), so FullProduct wins whenever it
-  // beats that floor and Novák (whose score depends on rho_T alone).
-  static bool FullProductSuffices(double transmittance_ratio) {
-    return Cheapest(Scores(1 + UniformVarianceBound(transmittance_ratio), transmittance_ratio)) ==
-           AutoModel::FullProduct;
+  // A bound of equiangular's second moment from a bound `phases` of the phase product's ratio
+  // and the transmittance's ratio and moment: Kantorovich's on the whole target, or the
+  // transmittance's moment times phases^2 (f <= max(phases) T, f >= min(phases) T), which
+  // stays finite on an unbounded segment.
+  static double MomentBound(double phases, double transmittance_ratio, double transmittance_moment) {
+    return std::min(1 + UniformVarianceBound(phases * transmittance_ratio), Sqr(phases) * transmittance_moment);
   }
-  // Equiangular wins whenever 1 + B(rho), rho any bound of the whole target's ratio, is no
+  // The early-outs, which look at no lobe and never change a decision. Every prediction of
+  // equiangular's second moment is at least the transmittance's moment, so FullProduct wins
+  // whenever it beats that floor and Novák (whose score depends on that moment alone).
+  static bool FullProductSuffices(double transmittance_moment) {
+    return Cheapest(Scores(transmittance_moment, transmittance_moment)) == AutoModel::FullProduct;
+  }
+  // Equiangular wins whenever a bound of its moment from any bound of the phases' ratio is no
   // more than the cheapest fit's best case (relative variance 0 at Novák's cost).
-  static bool EquiangularSuffices(double ratio) { return 1 + UniformVarianceBound(ratio) <= kCost[1]; }
+  static bool EquiangularSuffices(double phases, double transmittance_ratio, double transmittance_moment) {
+    return MomentBound(phases, transmittance_ratio, transmittance_moment) <= kCost[1];
+  }
 
-  // Equiangular's predicted second moment: Kantorovich's bound on the whole target's ratio;
-  // for a clamped-cosine point lobe also the cosine's exact moment times the squared ratios
-  // of the other factors (f <= max(others) c and f >= min(others) c), which stays finite
-  // where the cosine vanishes inside the interval. The smaller of the two upper bounds.
+  // Equiangular's predicted second moment: MomentBound with the phases' exact ratio; for a
+  // clamped-cosine point lobe also the cosine's exact moment times the squared ratios of the
+  // other factors (f <= max(others) c and f >= min(others) c), which stays finite where the
+  // cosine vanishes inside the interval. The smallest of these.
   template <typename Real>
   static double EquiangularMoment(const AngleDomain<Real>& dom, const PhaseProduct<Real>& phase,
-                                  double transmittance_ratio) {
+                                  double transmittance_ratio, double transmittance_moment) {
     double segment = double(SegmentLobeRangeRatio(dom, phase));
-    double moment = 1 + UniformVarianceBound(double(PhaseRangeRatio(dom, phase)) * transmittance_ratio);
+    double moment = MomentBound(double(PhaseRangeRatio(dom, phase)), transmittance_ratio, transmittance_moment);
     if (phase.point_kind() == LobeKind::ClampedCosine)
       moment = std::min(moment, Sqr(segment * transmittance_ratio) * ClampedCosineSecondMoment(dom, phase));
     return moment;
@@ -189,15 +232,15 @@ class AutoAngle {
   // The rule: first the two early-outs, which need no lobe evaluated, then the exact ratios;
   // the phase product built for them is the one Novák's fit uses.
   static Dist Make(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
-    double transmittance = double(TransmittanceRangeRatio(q));
+    double ratio = double(TransmittanceRangeRatio(q)), moment = TransmittanceMoment(q, dom);
     double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
                    : q.lobe.kind == LobeKind::None          ? 1.0
                                                             : std::numeric_limits<double>::infinity();
-    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point * transmittance))
+    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point, ratio, moment))
       return Dist(std::in_place_index<0>, q, dom);
-    if (AutoRule::FullProductSuffices(transmittance)) return Dist(std::in_place_index<2>, q, dom);
+    if (AutoRule::FullProductSuffices(moment)) return Dist(std::in_place_index<2>, q, dom);
     PhaseProduct<Real> phase(q, dom);
-    switch (AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, phase, transmittance), transmittance))) {
+    switch (AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, phase, ratio, moment), moment))) {
       case AutoModel::Novak: return Dist(std::in_place_index<1>, phase, dom.width());
       case AutoModel::FullProduct: return Dist(std::in_place_index<2>, q, dom);
       case AutoModel::Equiangular: break;
