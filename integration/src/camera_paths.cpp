@@ -26,15 +26,12 @@ class Timer {
   std::chrono::steady_clock::time_point start_;
 };
 
-// One call of a gather (stats before it in `before`): its contribution to the pixel squared,
-// weighted by its rate (an estimate of the call's second moment had it been taken,
-// docs/maths.md#effort-calls), and if it decided per gather, its seconds less its sampling's.
-void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, const EffortStats& before,
-             EffortStats* stats) {
+// One call of a gather: its rate and its contribution to the pixel squared, weighted by the
+// rate (an estimate of the call's second moment had it been taken, docs/maths.md#effort-calls).
+void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortStats* stats) {
   const double rate = vrlis::EffortCallRate(effort);
-  if (stats->decided_calls > before.decided_calls)
-    stats->decision_seconds += (stats->seconds - before.seconds) - (stats->sample_seconds - before.sample_seconds);
   stats->calls += 1;
+  stats->call_rate += rate;
   stats->call_m2 += rate * contribution.MeanSquare();
 }
 
@@ -55,16 +52,16 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       if (tr.medium_to_medium) {
         const vrlis::EffortSettings& effort = medium_effort;
         EffortStats& stats = count->medium_effort;
-        const EffortStats before = stats;
+        const std::uint64_t before = stats.gathers;
         Spectrum gathered;
         {
           Timer timer(effort.on, &stats.seconds);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
                                                  effort.on ? &stats : nullptr, tr.weight_log);
         }
-        if (effort.on) AddCall(effort, gathered, before, &stats);
+        if (effort.on) AddCall(effort, gathered, &stats);
         L += gathered;
-        count->medium_to_medium += effort.on ? stats.gathers - before.gathers : vrls.size();
+        count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
@@ -93,16 +90,16 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (tr.medium_to_surface && m.Present()) {
       const vrlis::EffortSettings& effort = surface_effort;
       EffortStats& stats = count->surface_effort;
-      const EffortStats before = stats;
+      const std::uint64_t before = stats.gathers;
       Spectrum gathered;
       {
         Timer timer(effort.on, &stats.seconds);
         gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
                                                 effort, effort.on ? &stats : nullptr, tr.weight_log);
       }
-      if (effort.on) AddCall(effort, gathered, before, &stats);
+      if (effort.on) AddCall(effort, gathered, &stats);
       L += gathered;
-      count->medium_to_surface += effort.on ? stats.gathers - before.gathers : vrls.size();
+      count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.indirect) {

@@ -81,7 +81,6 @@ void EffortPrice::Refresh() {
     auto sampling = [](const EffortStats& s) { return s.gathers > 0 ? s.sample_seconds / double(s.gathers) : 0.0; };
     const double models = sampling(c) > 0 && sampling(u) > 0 ? sampling(c) / sampling(u) : 1;
     const double gather_cost = u.gathers > 0 ? models * u.seconds / double(u.gathers) : 0;
-    gather_cost_[kind] = gather_cost;
     const double calibration = g.predicted > 0 ? g.measured / g.predicted : 0;
     price_[kind] = variance > 0 && gather_cost > 0 && calibration > 0
                        ? calibration * pixel_cost / (variance * gather_cost)
@@ -89,32 +88,15 @@ void EffortPrice::Refresh() {
   }
 }
 
-namespace {
-
-constexpr double kFewCalls = 16;  // deciding calls below which a tile's cost is too noisy
-
-// A deciding call's decisions: their time is what a call not taken, or not deciding, saves.
-double DecisionSeconds(const EffortStats& s) { return s.decision_seconds / s.decided_calls; }
-
-}  // namespace
-
 double EffortPrice::call_demand(GatherKind kind, int x, int y) const {
   const EffortStats& tile = tiles_[static_cast<int>(kind)][Tile(x, y)];
   const EffortStats& all = gathers_[static_cast<int>(kind)];
-  const double cost = tile.decided_calls >= kFewCalls ? DecisionSeconds(tile)
-                      : all.decided_calls > 0         ? DecisionSeconds(all)
-                                                      : 0;
+  // A taken call's decisions: their time is what a call not taken saves.
+  auto decisions = [](const EffortStats& s) { return (s.seconds - s.sample_seconds) / s.call_rate; };
+  constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy
+  const double cost = tile.call_rate >= kFewCalls ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
   if (!(value_of_time_ > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;
   return std::sqrt(tile.call_m2 / tile.calls / cost * value_of_time_);
-}
-
-double EffortPrice::decide(GatherKind kind, int x, int y) const {
-  const EffortStats& tile = tiles_[static_cast<int>(kind)][Tile(x, y)];
-  const EffortStats& all = gathers_[static_cast<int>(kind)];
-  const EffortStats& s = tile.gain_calls >= kFewCalls ? tile : all;
-  if (!(price_[static_cast<int>(kind)] > 0) || !(s.gain_calls > 0) || !(s.decided_calls > 0)) return 1;
-  const double gain = gather_cost_[static_cast<int>(kind)] * s.gain / s.gain_calls;
-  return gain >= DecisionSeconds(s) ? 1 : kExplore;
 }
 
 }  // namespace vrlis::integration

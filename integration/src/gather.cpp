@@ -68,7 +68,6 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
       if (!stats) return;
       ++taken.gathers;
-      if (!tally.deciding) return;  // only a deciding call's samples calibrate the predictions
       double y = (throughput * x).Rms() / effort_weight;
       taken.measured += effort_weight * y * y;
       ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
@@ -84,9 +83,6 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   if (stats) {
     taken.predicted = tally.predicted;
     taken.sample_seconds = tally.sample_seconds;
-    taken.decided_calls = tally.decided_calls;
-    taken.gain_calls = tally.gain_calls;
-    taken.gain = tally.gain;
     *stats += taken;
   }
   return sum;

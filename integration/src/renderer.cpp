@@ -72,8 +72,6 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     vrlis::EffortSettings m = medium_effort, s = surface_effort;
     m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
     s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
-    m.decide = price_.decide(GatherKind::Medium, x, y);
-    s.decide = price_.decide(GatherKind::Surface, x, y);
     auto p0 = std::chrono::steady_clock::now();
     Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, m, s);
     pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);

@@ -8,9 +8,6 @@
 // - Every weight handed to the renderer is finite and at most 1 / floor, for prices and
 //   queries at their extremes.
 // - The bounds of effort.hpp are at or above the gather's mean.
-// - A call that does not decide per gather takes each gather once with weight 1, and calls
-//   that decide with any probability keep the mean; a decision's first-order gain is
-//   (1 - D)^2 at q = D, nothing at q = 1 or without a price.
 #include <catch2/catch.hpp>
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
@@ -118,45 +115,6 @@ TEST_CASE("a call taken with a probability keeps the gather unbiased; without 1 
   const Moments sabotaged = Estimate(s, e, 60000, false, 0.3);
   INFO("sabotaged " << sabotaged.mean << " +- " << sabotaged.se);
   CHECK(Z(sabotaged, off) > 4);
-}
-
-TEST_CASE("a call that does not decide takes every gather once; deciding at any rate keeps the mean",
-          "[gather][effort]") {
-  const Setup s = MakeSetup();
-  const double hi = BoundRange(s).second;
-  vrlis::EffortSettings e{true, vrlis::Sqr(0.8 / hi)};  // every q at most 0.8 when deciding
-  e.decide = 0;
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<Real> u(0, 1);
-  for (int run = 0; run < 50; ++run) {
-    std::vector<int> samples(s.vrls.size());
-    vrlis::EffortTally tally;
-    vrlis::GatherMediumVrls(s.method, e, s.camera, s.medium, s.vrls.data(), s.weights.data(), int(s.vrls.size()),
-                            [&] { return u(rng); },
-                            [&](int i, const vrlis::GatherSample<Real>&, Real w) {
-                              ++samples[std::size_t(i)];
-                              CHECK(w == 1);
-                            },
-                            &tally);
-    CHECK(std::all_of(samples.begin(), samples.end(), [](int n) { return n == 1; }));
-    CHECK(tally.decided_calls == 0);
-    CHECK_FALSE(tally.deciding);
-  }
-  const Moments off = Estimate(s, {}, 40000);
-  e.decide = 0.4;
-  const Moments on = Estimate(s, e, 40000);
-  INFO("off " << off.mean << " +- " << off.se << ", deciding at 0.4 " << on.mean << " +- " << on.se);
-  CHECK(Z(on, off) < 4);
-  // The decisions' gain: none at q = 1 or unpriced, (1 - D)^2 where q = D, the split share too.
-  vrlis::EffortSettings g{true, 1.0};
-  CHECK(vrlis::EffortGain(g, 1.0, 1.0) == 0);
-  CHECK(vrlis::EffortGain(g, 0.3, 0.3) == Approx(0.49));
-  CHECK(vrlis::EffortGain(g, 4.0, 4.0) == Approx(9));
-  CHECK(vrlis::EffortGain(g, 0.3, 1.0) == 0);
-  CHECK(vrlis::EffortGain(g, 0.3, 0.01) < 0);  // rouletted below its demand: a loss
-  g.within = 0.25;
-  CHECK(vrlis::EffortGain(g, 4.0, 2.0) == Approx(1));
-  CHECK(vrlis::EffortGain(vrlis::EffortSettings{}, 0.3, 0.3) == 0);
 }
 
 TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][effort]") {

@@ -7,9 +7,6 @@
 //   (docs/compare/decomposition.md), the gathers fall to the floor (by pass 5 under three times
 //   its share of the uncontrolled count); in the bidirectional scene, which is nothing but gathers, the
 //   gathers taken stay at or above one per VRL;
-// - a call decides per gather only where its decisions gained at least their time: with the
-//   price learned, a tile whose deciding calls gained less than their seconds decides at the
-//   exploration rate, one that gained more always (EffortPrice on constructed passes);
 // - a call of gathers is taken at the floor's rate where its gathers carry no variance (room)
 //   and mostly taken where they carry it all (bidirectional);
 // - roulette raises the samples' weights and the floor bounds them: in room the largest effort
@@ -77,39 +74,6 @@ TEST_CASE("a pass's effort decisions come from the passes before it", "[render][
   }
   vrlis::integration::VrlRenderer fresh(built->scene, s);
   CHECK_FALSE(Same(fresh.RenderPass(1, 3, nullptr), original));
-}
-
-TEST_CASE("effort: calls decide per gather where their decisions pay for their time", "[render][effort]") {
-  using vrlis::integration::EffortStats;
-  using vrlis::integration::GatherKind;
-  const int size = 16;  // two tiles across
-  auto pass = [&](int p) {  // a checkerboard that flips from pass to pass: a variance of 1/4
-    vrlis::integration::Film film(size, size);
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x) film.at(x, y) = vrlis::integration::Spectrum(float(1 + (x + y + p) % 2));
-    return film;
-  };
-  auto stats = [&](double gain) {  // per pixel: one deciding call of 10 gathers, 1 us of them deciding
-    std::vector<EffortStats> v(std::size_t(size) * size);
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      EffortStats& s = v[i];
-      s.gathers = 10, s.seconds = 2e-6, s.sample_seconds = 1e-6, s.decision_seconds = 1e-6;
-      s.predicted = s.measured = 1, s.calls = s.decided_calls = 1;
-      if (gain > 0 && i % size < size / 2) s.gain_calls = 1, s.gain = gain;  // the left tiles only
-    }
-    return v;
-  };
-  vrlis::integration::EffortPrice price(size, size);
-  price.Add(pass(0), 1e-3, stats(0), stats(0));  // the first pass: unpriced, every call decides
-  CHECK(price.decide(GatherKind::Medium, 0, 0) == 1);
-  // A gather costs 2e-7 s here: 2 gathers' gain is 0.4 of a call's decision seconds, 20 four times them.
-  for (int p = 1; p < 4; ++p) price.Add(pass(p), 1e-3, stats(2), stats(20));
-  REQUIRE(price.price(GatherKind::Medium) > 0);
-  CHECK(price.decide(GatherKind::Medium, 0, 0) == vrlis::integration::EffortPrice::kExplore);
-  CHECK(price.decide(GatherKind::Surface, 0, 0) == 1);
-  // Where no deciding call was priced (the right tiles), the kind's own calls decide.
-  CHECK(price.decide(GatherKind::Medium, size - 1, 0) == vrlis::integration::EffortPrice::kExplore);
-  CHECK(price.decide(GatherKind::Surface, size - 1, 0) == 1);
 }
 
 TEST_CASE("effort: gathers without variance fall to the floor, a scene of gathers keeps them", "[render][effort]") {

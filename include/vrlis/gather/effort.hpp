@@ -40,12 +40,6 @@ struct EffortSettings {
   // 1 / rate times as often: every gather's expected samples and weights stay those of its
   // own demand, and the calls not taken save their bounds. 1, more or NaN: every call taken.
   double call_demand = 1;
-  // The probability that a taken call decides per gather (bounds, roulette, splitting and
-  // model); otherwise each of its gathers is taken once with the call's weight. The decisions
-  // cost time of their own: below one where their predicted gain fell short of it in earlier
-  // calls like this one (docs/maths.md#effort-decide), learned by the renderer like the price.
-  // 1 or more: every taken call decides, and draws no number for it.
-  double decide = 1;
 };
 
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
@@ -56,15 +50,9 @@ struct EffortSettings {
 // learned from earlier passes, scales the price (a bound is not a second moment).
 // `sample_seconds` is the time spent sampling and connecting the samples: the rest of a call's
 // time is its decisions' (docs/maths.md#effort-calls).
-// Of the calls that decided per gather: how many (`decided_calls`), and of those with a price
-// how many (`gain_calls`) and the first-order gain of their decisions over taking each gather
-// once, in gathers' time (EffortGain summed over their gathers); `deciding` tells the renderer's connect callback whether the samples it is
-// handed come from such a call (only theirs calibrate the predictions).
 struct EffortTally {
   double predicted = 0;
   double sample_seconds = 0;
-  double decided_calls = 0, gain_calls = 0, gain = 0;
-  bool deciding = false;
 };
 
 // Whether the control has a price to decide by: on, and a positive finite price learned.
@@ -107,19 +95,6 @@ inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
   return SplitDemand(e, demand) >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
 }
 
-// What taking a gather q times instead of once saves, to first order, in units of one
-// gather's time (docs/maths.md#effort-decide): (1 - q) of time and (1 / q - 1) D^2 of
-// variance, D the (split-scaled) demand, at the price's exchange rate. (1 - D)^2 >= 0 where q = D.
-inline double EffortGain(const EffortSettings& e, double demand, double q) {
-  if (!EffortPriced(e) || !std::isfinite(demand)) return 0;
-  return (1 - q) - (1 / q - 1) * Sqr(SplitDemand(e, demand));
-}
-// Whether a taken call decides per gather (EffortSettings::decide); draws a number only when
-// the probability is below one.
-template <typename Uniform>
-bool EffortDecides(const EffortSettings& e, Uniform& uniform) {
-  return !EffortPriced(e) || !(e.decide < 1) || double(uniform()) < e.decide;
-}
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.
 inline int EffortSamples(double q, double u) { return static_cast<int>(std::floor(q + u)); }
 

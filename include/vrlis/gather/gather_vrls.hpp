@@ -53,13 +53,6 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
   Batch batches[2];
   const double rate = EffortCallRate(effort);
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
-  // A call rouletted as a whole always decides: its gathers' own demands are what it rests on.
-  const bool decide = effort.on && (rate < 1 || EffortDecides(effort, uniform));
-  if (tally) {
-    tally->deciding = decide;
-    tally->decided_calls += decide;
-    tally->gain_calls += decide && EffortPriced(effort);
-  }
   auto run = [&](EffortModel model) {
     const auto start = tally ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Batch& batch = batches[static_cast<int>(model)];
@@ -74,9 +67,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     int n = 1;
     Real weight = 1;
     EffortModel model = EffortModel::Chosen;
-    if (effort.on && !decide) {
-      weight = Real(1 / rate);
-    } else if (effort.on) {
+    if (effort.on) {
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
         if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(predict(i))) : 0;
@@ -88,10 +79,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
       if (policy) model = ChooseEffortModel(effort, demand);
       n = EffortSamples(q / rate, double(uniform()));
       weight = n > 0 ? Real(1 / q) : Real(0);
-      if (tally) {
-        if (n > 0) tally->predicted += n * predicted() / q;
-        tally->gain += EffortGain(effort, demand, q);
-      }
+      if (tally && n > 0) tally->predicted += n * predicted() / q;
     }
     Batch& batch = batches[static_cast<int>(model)];
     for (int j = 0; j < n; ++j) {

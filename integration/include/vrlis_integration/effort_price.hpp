@@ -18,25 +18,20 @@ namespace vrlis::integration {
 // calls that took them, the predicted second moments (vrlis::EffortTally) and the samples'
 // own estimate of them. Of the gathers split into several samples: the sum of their within
 // variances and of their second moments, each estimated from its own samples (the share
-// splitting reduces). Of the calls (vrlis::EffortCallRate): how many, and the sum of
-// rate x (contribution to the pixel)^2, an estimate of their second moments had each been taken (docs/maths.md#effort-calls). Of the seconds, those spent sampling (the rest is
-// the decisions'). Of the calls that decided per gather: how many, their seconds less their
-// sampling's, and of those with a price their count and their decisions' gain in gathers'
-// time (vrlis::EffortTally; docs/maths.md#effort-decide). `measured` and the split sums count
-// deciding calls only.
+// splitting reduces). Of the calls (vrlis::EffortCallRate): how many, the sum of their rates
+// and of rate x (contribution to the pixel)^2, an estimate of their second moments had each
+// been taken (docs/maths.md#effort-calls). Of the seconds, those spent sampling (the rest is
+// the decisions').
 struct EffortStats {
   std::uint64_t gathers = 0;
   double seconds = 0, sample_seconds = 0, predicted = 0, measured = 0;
   double split_within = 0, split_second = 0;
-  double calls = 0, call_m2 = 0;
-  double decided_calls = 0, decision_seconds = 0, gain_calls = 0, gain = 0;
+  double calls = 0, call_rate = 0, call_m2 = 0;
   void operator+=(const EffortStats& o) {
     gathers += o.gathers, seconds += o.seconds, sample_seconds += o.sample_seconds;
     predicted += o.predicted, measured += o.measured;
     split_within += o.split_within, split_second += o.split_second;
-    calls += o.calls, call_m2 += o.call_m2;
-    decided_calls += o.decided_calls, decision_seconds += o.decision_seconds;
-    gain_calls += o.gain_calls, gain += o.gain;
+    calls += o.calls, call_rate += o.call_rate, call_m2 += o.call_m2;
   }
 };
 
@@ -69,16 +64,10 @@ class EffortPrice {
     return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;
   }
   // The demand of one call of the gathers at pixel (x, y) (vrlis::EffortSettings::call_demand):
-  // sqrt((second moment / decision seconds of a deciding call) x (pixel cost / pixel variance)),
+  // sqrt((second moment / decision seconds of a taken call) x (pixel cost / pixel variance)),
   // both from the earlier calls of the pixel's tile (the seconds from the kind's calls while
-  // the tile has decided few); 1 before kMinPasses passes.
+  // the tile has taken few); 1 before kMinPasses passes.
   double call_demand(GatherKind kind, int x, int y) const;
-  // The probability that a call of the gathers at pixel (x, y) decides per gather
-  // (vrlis::EffortSettings::decide): 1 where the earlier deciding calls of the pixel's tile (of
-  // the kind's, while the tile has few) gained at least their decisions' seconds, else
-  // kExplore, so that the gain goes on being measured; 1 before kMinPasses passes.
-  double decide(GatherKind kind, int x, int y) const;
-  static constexpr double kExplore = 1.0 / 16;
   int passes() const { return passes_; }
 
  private:
@@ -104,7 +93,6 @@ class EffortPrice {
   EffortStats uncontrolled_[2];  // of the first kMinPasses passes, which took every gather once
   EffortStats controlled_[2];    // of the passes after
   double price_[2] = {0, 0};
-  double gather_cost_[2] = {0, 0};  // seconds of one gather, as priced
 };
 
 }  // namespace vrlis::integration
