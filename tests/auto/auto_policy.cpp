@@ -76,15 +76,18 @@ Q RandomQuery(std::mt19937_64& rng) {
   return q;
 }
 
+double TransmittanceMoment(const Q& q) {
+  return vrlis::TransmittanceMoment(q, vrlis::AngleDomain<double>(q), vrlis::TransmittanceRangeRatio(q));
+}
+
 double PredictedMoment(const Q& q) {
   vrlis::AngleDomain<double> dom(q);
   return vrlis::AutoRule::EquiangularMoment(dom, vrlis::PhaseProduct<double>(q, dom), vrlis::TransmittanceRangeRatio(q),
-                                            vrlis::TransmittanceMoment(q, dom));
+                                            TransmittanceMoment(q));
 }
 
 AutoModel ExactRule(const Q& q) {
-  vrlis::AngleDomain<double> dom(q);
-  return vrlis::AutoRule::Cheapest(vrlis::AutoRule::Scores(PredictedMoment(q), vrlis::TransmittanceMoment(q, dom)));
+  return vrlis::AutoRule::Cheapest(vrlis::AutoRule::Scores(PredictedMoment(q), TransmittanceMoment(q)));
 }
 
 // The same segment and point, unbounded.
@@ -157,6 +160,7 @@ TEST_CASE("the auto rule's bound is an upper bound of equiangular's relative var
 TEST_CASE("on an unbounded segment the transmittance's predicted moment is close to the quadrature's") {
   std::mt19937_64 rng(15);
   std::uniform_real_distribution<double> u(0, 1);
+  int compared = 0;
   for (int i = 0; i < 200; ++i) {
     Q q = Unbounded(RandomQuery(rng));
     q.g = q.lobe.g = 0;  // the transmittance alone varies
@@ -167,9 +171,11 @@ TEST_CASE("on an unbounded segment the transmittance's predicted moment is close
     INFO("query " << i << ": sigma_t h " << depth << " width " << dom.width() << " actual " << actual << " predicted "
                   << predicted);
     if (depth > 3) continue;  // equiangular has long lost there (moment above 2.5), however low the prediction
+    ++compared;
     CHECK(predicted >= actual / 1.3);
     CHECK(predicted <= actual * 1.3);
   }
+  CHECK(compared > 100);
 }
 
 TEST_CASE("for a diffuse surface point the predicted moment is an upper bound, finite where the cosine vanishes") {

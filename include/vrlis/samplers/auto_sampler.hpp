@@ -112,8 +112,8 @@ Real UniformVarianceBound(Real rho) {
   return std::isfinite(rho) ? Sqr(rho - 1) / (4 * rho) : std::numeric_limits<Real>::infinity();
 }
 
-// e^z E1(z) for z > 0 in the form 1 - z e^z E1(z) (Abramowitz and Stegun 5.1.53 below one,
-// 5.1.56 above, both within 5e-5), which falls from 1 at 0 like 1 / z at infinity.
+// 1 - z e^z E1(z) for z > 0 (Abramowitz and Stegun 5.1.53 below one, 5.1.56 above, both
+// within 5e-5): it falls from 1 at 0 like 1 / z at infinity.
 inline double ExponentialIntegralComplement(double z) {
   if (z < 1) {
     double e1 = -std::log(z) - 0.57721566 +
@@ -138,12 +138,11 @@ double UnboundedTransmittanceMoment(const SegmentQuery<Real>& q, const AngleDoma
 }
 
 // The transmittance's factor in the models' second moments: Kantorovich's 1 + B(rho_T) on a
-// bounded segment, the moment above on an unbounded one.
+// bounded segment (`ratio` is rho_T, TransmittanceRangeRatio, which the rule has already),
+// the moment above on an unbounded one.
 template <typename Real>
-double TransmittanceMoment(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
-  if (std::isfinite(q.tmax) || !(q.sigma_t > 0)) {
-    return 1 + UniformVarianceBound(double(TransmittanceRangeRatio(q)));
-  }
+double TransmittanceMoment(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom, double ratio) {
+  if (std::isfinite(q.tmax) || !(q.sigma_t > 0)) return 1 + UniformVarianceBound(ratio);
   return UnboundedTransmittanceMoment(q, dom);
 }
 
@@ -232,7 +231,7 @@ class AutoAngle {
   // The rule: first the two early-outs, which need no lobe evaluated, then the exact ratios;
   // the phase product built for them is the one Novák's fit uses.
   static Dist Make(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
-    double ratio = double(TransmittanceRangeRatio(q)), moment = TransmittanceMoment(q, dom);
+    double ratio = double(TransmittanceRangeRatio(q)), moment = TransmittanceMoment(q, dom, ratio);
     double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
                    : q.lobe.kind == LobeKind::None          ? 1.0
                                                             : std::numeric_limits<double>::infinity();
