@@ -10,6 +10,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -95,6 +96,7 @@ double Rmse(const vrlis::integration::Film& a, const vrlis::integration::Film& b
 int main(int argc, char** argv) {
   std::string scene_name, sampler = "cauchy-sum", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
+  float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
@@ -132,6 +134,11 @@ int main(int argc, char** argv) {
   app.add_option("--pixel-samples", pixel_samples, "stratified: each pixel's passes at the points of a scrambled "
                                                    "(0,2)-sequence (lower error of the mean, passes not independent); "
                                                    "independent: a fresh uniform point per pass")
+      ->capture_default_str();
+  app.add_option("--vpl-bound", vpl_bound, "VPLs at the light paths' diffuse vertices take the surface-to-surface "
+                                           "connections up to this geometry term cos cos / r^2, the path-traced "
+                                           "remainder the excess (Kollig and Keller 2004); 0: no VPLs")
+      ->check(CLI::Range(0.f, std::numeric_limits<float>::max()))
       ->capture_default_str();
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");
   app.add_flag("--no-caustics", no_caustics, "Stop light paths at a specular surface met before any "
@@ -209,13 +216,14 @@ int main(int argc, char** argv) {
   settings.transport = built->transport;
   settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
+  settings.transport.vpl_bound = vpl_bound;
   settings.transport.effort.on = effort == "on";
   std::atomic<int> rows_done{0};
   settings.rows_done = &rows_done;
   if (gather != "all") {
     settings.transport.medium_to_medium = gather == "m2m";
     settings.transport.medium_to_surface = gather == "m2s";
-    settings.transport.direct = settings.transport.indirect = false;
+    settings.transport.direct = settings.transport.indirect = settings.transport.surface_to_surface = false;
   }
   vrlis::integration::QueryLog query_log(dump_every);
   if (!dump_queries.empty()) settings.transport.query_log = &query_log;
@@ -274,7 +282,7 @@ int main(int argc, char** argv) {
       {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather}, {"effort", effort},
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
-      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
+      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
       {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds},
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;

@@ -39,6 +39,7 @@ PART_COLOURS = {
     "medium-to-surface": "tab:orange",
     "single scattering": "tab:purple",
     "direct": "tab:olive",
+    "surface-to-surface": "tab:brown",
     "remainder": "tab:gray",
     "light paths, camera rays": "lightgray",
     "light paths and pixel": "lightsteelblue",

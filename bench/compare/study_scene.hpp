@@ -29,10 +29,10 @@ inline StudyScene BuildStudyScene(const std::string& name, const vrlis::scenes::
   return {std::move(*built), settings};
 }
 
-// Only the two VRL gathers: no direct lighting, single scattering or path-traced remainder.
+// Only the two VRL gathers: no direct lighting, single scattering, VPLs or path-traced remainder.
 inline void KeepVrlGathersOnly(StudyScene& s) {
   vrlis::integration::TransportSettings& t = s.settings.transport;
-  t.direct = t.single_scattering = t.indirect = false;
+  t.direct = t.single_scattering = t.indirect = t.surface_to_surface = false;
   t.medium_to_medium = true;
   t.medium_to_surface = s.built.has_surfaces;
 }

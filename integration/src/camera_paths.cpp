@@ -37,7 +37,8 @@ void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortS
 
 }  // namespace
 
-Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls, Ray ray,
+Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls,
+                     const std::vector<Vpl>& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
                      const vrlis::EffortSettings& surface_effort) {
   const HomogeneousMedium& m = scene.medium;
@@ -102,10 +103,11 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
+    if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_bound);
     if (tr.indirect) {
       float u1 = rng.Uniform(), u2 = rng.Uniform();
       Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
-      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, true);
+      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, true, tr.vpl_bound > 0 ? &nf : nullptr);
     }
     break;
   }

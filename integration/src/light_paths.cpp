@@ -35,7 +35,7 @@ Emission SampleEmission(const Scene& scene, const LatticeRotations& rotations, i
 }
 
 void TracePath(const Scene& scene, const TransportSettings& tr, const LatticeRotations& rotations, int index,
-               int count, Rng& rng, std::vector<Vrl>* out) {
+               int count, Rng& rng, std::vector<Vrl>* out, std::vector<Vpl>* vpls) {
   Emission e = SampleEmission(scene, rotations, index, count, rng);
   Ray ray = e.ray;
   Spectrum beta = e.flux;
@@ -72,9 +72,11 @@ void TracePath(const Scene& scene, const TransportSettings& tr, const LatticeRot
     const Material& mat = scene.materials[static_cast<std::size_t>(hit.material)];
     if (mat.IsSpecular()) {
       if (!tr.light_caustics && !scattered) return;
+      if (depth == 0) vpls = nullptr;
       BounceSpecular(mat, hit.p, hit.n, rng.Uniform(), &ray, &beta);
     } else {
       Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
+      if (vpls) vpls->push_back({hit.p, nf, beta * mat.albedo * (1 / kPi)});
       beta *= mat.albedo;
       float u1 = rng.Uniform(), u2 = rng.Uniform();
       ray = {hit.p, SampleCosineHemisphere(nf, u1, u2)};
@@ -94,17 +96,23 @@ Rotation LatticeRotation(const PointLight& light, std::uint64_t seed, std::uint6
 }
 
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
-                                 std::uint64_t seed, std::uint64_t pass) {
+                                 std::uint64_t seed, std::uint64_t pass, std::vector<Vpl>* vpls) {
   LatticeRotations rotations;
   for (std::size_t k = 0; k < scene.lights.points.size(); ++k)
     rotations.push_back(LatticeRotation(scene.lights.points[k], seed, pass, k));
   std::vector<std::vector<Vrl>> per_path(static_cast<std::size_t>(count));
+  std::vector<std::vector<Vpl>> vpls_per_path(vpls ? static_cast<std::size_t>(count) : 0);
   tbb::parallel_for(0, count, [&](int i) {
     Rng rng(seed, pass, static_cast<std::uint64_t>(i), StreamPurpose::LightPath);
-    TracePath(scene, transport, rotations, i, count, rng, &per_path[static_cast<std::size_t>(i)]);
+    const auto k = static_cast<std::size_t>(i);
+    TracePath(scene, transport, rotations, i, count, rng, &per_path[k], vpls ? &vpls_per_path[k] : nullptr);
   });
   std::vector<Vrl> vrls;
   for (const auto& p : per_path) vrls.insert(vrls.end(), p.begin(), p.end());
+  if (vpls) {
+    vpls->clear();
+    for (const auto& p : vpls_per_path) vpls->insert(vpls->end(), p.begin(), p.end());
+  }
   return vrls;
 }
 

@@ -1,14 +1,17 @@
 #include "vrlis_integration/path_tracer.hpp"
 
+#include <utility>
+
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
+#include "vrlis_integration/vpl.hpp"
 
 namespace vrlis::integration {
 namespace {
 constexpr vrlis::SegmentChoice kEquiangular = vrlis::SegmentSamplers::Of<vrlis::EquiangularEntry>();
 }  // namespace
 
-Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) const {
+Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium, const Vec3f* vpl_normal) const {
   const HomogeneousMedium& m = scene_.medium;
   Spectrum L, beta(1.f);
   bool after_vertex = false;  // the ray leaves a vertex that gathered with VertexSingleScattering
@@ -17,6 +20,7 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
     if (after_vertex) L += beta * VertexSingleScattering(scene_, p, lobe, rng);
   };
   for (; depth < tr_.max_depth; ++depth) {
+    const Vec3f* shared_from = std::exchange(vpl_normal, nullptr);  // the first vertex only
     SurfaceHit hit;
     bool found = scene_.Intersect(ray, &hit);
     Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
@@ -49,6 +53,11 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium) co
         after_vertex = false;  // a delta direction: nothing to gather jointly
       } else {
         Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
+        if (shared_from) {
+          float share = RemainderShare(GeometryTerm(ray.o, *shared_from, hit.p, nf), tr_.vpl_bound);
+          if (!(share > 0)) break;  // the VPLs carry this connection whole
+          beta *= share;
+        }
         L += beta * DirectSurface(scene_, hit.p, nf, mat.albedo);
         beta *= mat.albedo;
         at_vertex(hit.p, {nf, 0, true});

@@ -48,9 +48,15 @@ double Since(std::chrono::steady_clock::time_point t0) {
 
 Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
   auto t0 = std::chrono::steady_clock::now();
-  std::vector<Vrl> vrls = scene_.medium.Present() && !scene_.lights.Powers().empty()
-                              ? TraceLightPaths(scene_, settings_.transport, settings_.vrls_per_pass, seed, pass)
-                              : std::vector<Vrl>{};
+  // Without a medium there are no light paths, and no VPLs to share the remainder's
+  // connections with: the remainder then carries them all.
+  const bool light_paths = scene_.medium.Present() && !scene_.lights.Powers().empty();
+  TransportSettings transport = settings_.transport;
+  if (!light_paths) transport.vpl_bound = 0;
+  std::vector<Vpl> vpls;
+  std::vector<Vrl> vrls = light_paths ? TraceLightPaths(scene_, transport, settings_.vrls_per_pass, seed, pass,
+                                                        transport.vpl_bound > 0 ? &vpls : nullptr)
+                                      : std::vector<Vrl>{};
   std::atomic<std::uint64_t> gathers{0};
   // What the price learns from this pass, with the effort control on only.
   std::atomic<std::uint64_t> pixel_ns{0};
@@ -65,7 +71,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     GatherCount count;
     if (!effort.on) {
-      Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count);
+      Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count);
       gathers.fetch_add(count.Total(), std::memory_order_relaxed);
       return L;
     }
@@ -73,7 +79,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
     s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
     auto p0 = std::chrono::steady_clock::now();
-    Spectrum L = VrlRadiance(scene_, settings_.transport, vrls, ray, rng, &count, m, s);
+    Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s);
     pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;

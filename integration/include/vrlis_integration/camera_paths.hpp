@@ -10,6 +10,7 @@
 #include "effort_price.hpp"
 #include "scene.hpp"
 #include "transport.hpp"
+#include "vpl.hpp"
 #include "vrl.hpp"
 
 namespace vrlis::integration {
@@ -20,8 +21,11 @@ struct GatherCount {
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 
-// The transport's effort control with the pass's prices of the two gathers.
-Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls, Ray ray,
+// The transport's effort control with the pass's prices of the two gathers. `vpls` are the
+// pass's VPLs: with the transport's vpl_bound above 0 they share the surface-to-surface
+// connections with the remainder whether or not the pass has any.
+Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls,
+                     const std::vector<Vpl>& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort = {},
                      const vrlis::EffortSettings& surface_effort = {});
 

@@ -1,11 +1,12 @@
 #pragma once
 // The light pass: trace light paths from the lights and record every medium segment as a
-// VRL.
+// VRL and, for the surface-to-surface gather, every diffuse vertex as a VPL.
 #include <cstdint>
 #include <vector>
 
 #include "scene.hpp"
 #include "transport.hpp"
+#include "vpl.hpp"
 #include "vrl.hpp"
 
 namespace vrlis::integration {
@@ -16,8 +17,10 @@ namespace vrlis::integration {
 Rotation LatticeRotation(const PointLight& light, std::uint64_t seed, std::uint64_t pass, std::size_t light_index);
 
 // `count` light paths of one pass, each starting with flux (light power / count); the VRLs
-// come out in path order, whatever the thread count.
+// (and the VPLs, if `vpls` is set) come out in path order, whatever the thread count. A path
+// whose first vertex is specular makes no VPLs: the remainder, which would share their
+// connections, cannot sample light through a specular surface from a delta light.
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
-                                 std::uint64_t seed, std::uint64_t pass);
+                                 std::uint64_t seed, std::uint64_t pass, std::vector<Vpl>* vpls = nullptr);
 
 }  // namespace vrlis::integration
