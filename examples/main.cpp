@@ -223,7 +223,8 @@ int main(int argc, char** argv) {
   if (gather != "all") {
     settings.transport.medium_to_medium = gather == "m2m";
     settings.transport.medium_to_surface = gather == "m2s";
-    settings.transport.direct = settings.transport.indirect = settings.transport.surface_to_surface = false;
+    settings.transport.direct = settings.transport.indirect = false;
+    settings.transport.surface_to_surface = settings.transport.surface_to_medium = false;
   }
   vrlis::integration::QueryLog query_log(dump_every);
   if (!dump_queries.empty()) settings.transport.query_log = &query_log;

@@ -71,7 +71,7 @@ void RenderParts(const vrlis::integration::Scene& scene, const vrlis::integratio
   auto add = [&](const std::string& name, auto&& edit) {
     vrlis::integration::RenderSettings s = whole;
     s.transport.medium_to_medium = s.transport.medium_to_surface = s.transport.direct = s.transport.indirect = false;
-    s.transport.surface_to_surface = false;
+    s.transport.surface_to_surface = s.transport.surface_to_medium = false;
     edit(s.transport);
     variants.push_back({name, std::make_unique<PassRenderer>(scene, s), 0});
     return variants.size() - 1;
@@ -94,6 +94,8 @@ void RenderParts(const vrlis::integration::Scene& scene, const vrlis::integratio
   }
   if (t.surface_to_surface)
     parts.push_back({"surface-to-surface", add("s2s", [](vrlis::integration::TransportSettings& x) { x.surface_to_surface = true; }), none, false});
+  if (t.surface_to_medium)
+    parts.push_back({"surface-to-medium", add("s2m", [](vrlis::integration::TransportSettings& x) { x.surface_to_medium = true; }), none, false});
   if (t.indirect)
     parts.push_back({"remainder", add("remainder", [](vrlis::integration::TransportSettings& x) { x.indirect = true; }), none, false});
 

@@ -40,6 +40,7 @@ PART_COLOURS = {
     "single scattering": "tab:purple",
     "direct": "tab:olive",
     "surface-to-surface": "tab:brown",
+    "surface-to-medium": "tab:pink",
     "remainder": "tab:gray",
     "light paths, camera rays": "lightgray",
     "light paths and pixel": "lightsteelblue",

@@ -28,7 +28,7 @@ std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::Transpo
       << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " samplers=";
   for (GatherSamplers s : Mixture(c)) key << SamplerName(s) << ",";
   key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect
-      << t.light_caustics << t.first_segment_only << t.surface_to_surface << "/" << t.max_depth << "/" << t.rr_depth
+      << t.light_caustics << t.first_segment_only << t.surface_to_surface << t.surface_to_medium << "/" << t.max_depth << "/" << t.rr_depth
       << "/" << t.vpl_bound;
   return key.str();
 }

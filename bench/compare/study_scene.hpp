@@ -32,7 +32,8 @@ inline StudyScene BuildStudyScene(const std::string& name, const vrlis::scenes::
 // Only the two VRL gathers: no direct lighting, single scattering, VPLs or path-traced remainder.
 inline void KeepVrlGathersOnly(StudyScene& s) {
   vrlis::integration::TransportSettings& t = s.settings.transport;
-  t.direct = t.single_scattering = t.indirect = t.surface_to_surface = false;
+  t.direct = t.single_scattering = t.indirect = false;
+  t.surface_to_surface = t.surface_to_medium = false;
   t.medium_to_medium = true;
   t.medium_to_surface = s.built.has_surfaces;
 }

@@ -65,12 +65,14 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
+      if (tr.surface_to_medium) L += beta * GatherVpls(tr.sampling.segment, scene, seg, vpls, tr.vpl_bound, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {
           float u1 = rng.Uniform(), u2 = rng.Uniform();
           Ray next{ray(d), SamplePhase(m.g, ray.d, u1, u2)};
-          L += beta * m.Albedo() * remainder.Li(next, rng, depth + 1, true);
+          const VplShareStart start{next.o, {}, false};
+          L += beta * m.Albedo() * remainder.Li(next, rng, depth + 1, true, tr.vpl_bound > 0 ? &start : nullptr);
         }
       }
       beta *= std::exp(-m.SigmaT() * iv.Length());  // on to the surface
@@ -107,7 +109,8 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (tr.indirect) {
       float u1 = rng.Uniform(), u2 = rng.Uniform();
       Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
-      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, true, tr.vpl_bound > 0 ? &nf : nullptr);
+      const VplShareStart start{hit.p, nf, true};
+      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, true, tr.vpl_bound > 0 ? &start : nullptr);
     }
     break;
   }

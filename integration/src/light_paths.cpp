@@ -76,7 +76,7 @@ void TracePath(const Scene& scene, const TransportSettings& tr, const LatticeRot
       BounceSpecular(mat, hit.p, hit.n, rng.Uniform(), &ray, &beta);
     } else {
       Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
-      if (vpls) vpls->push_back({hit.p, nf, beta * mat.albedo * (1 / kPi)});
+      if (vpls) vpls->push_back({hit.p, nf, beta * mat.albedo});
       beta *= mat.albedo;
       float u1 = rng.Uniform(), u2 = rng.Uniform();
       ray = {hit.p, SampleCosineHemisphere(nf, u1, u2)};

@@ -11,7 +11,7 @@ namespace {
 constexpr vrlis::SegmentChoice kEquiangular = vrlis::SegmentSamplers::Of<vrlis::EquiangularEntry>();
 }  // namespace
 
-Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium, const Vec3f* vpl_normal) const {
+Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium, const VplShareStart* shared) const {
   const HomogeneousMedium& m = scene_.medium;
   Spectrum L, beta(1.f);
   bool after_vertex = false;  // the ray leaves a vertex that gathered with VertexSingleScattering
@@ -20,7 +20,7 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium, co
     if (after_vertex) L += beta * VertexSingleScattering(scene_, p, lobe, rng);
   };
   for (; depth < tr_.max_depth; ++depth) {
-    const Vec3f* shared_from = std::exchange(vpl_normal, nullptr);  // the first vertex only
+    const VplShareStart* shared_from = std::exchange(shared, nullptr);  // the first vertex only
     SurfaceHit hit;
     bool found = scene_.Intersect(ray, &hit);
     Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
@@ -54,7 +54,7 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, bool skip_first_medium, co
       } else {
         Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
         if (shared_from) {
-          float share = RemainderShare(GeometryTerm(ray.o, *shared_from, hit.p, nf), tr_.vpl_bound);
+          float share = RemainderShare(GeometryTerm(*shared_from, hit.p, nf), tr_.vpl_bound);
           if (!(share > 0)) break;  // the VPLs carry this connection whole
           beta *= share;
         }

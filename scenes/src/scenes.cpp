@@ -34,7 +34,8 @@ void Bidirectional(BuiltScene& b, EmbreeGeometry&) {
   b.scene.medium = {0.25f, 0.1f, -0.9f};
   b.scene.lights.points.push_back({{0, 0, -2}, Spectrum(2.f), true});
   b.transport.first_segment_only = true;
-  b.transport.medium_to_surface = b.transport.direct = b.transport.indirect = b.transport.surface_to_surface = false;
+  b.transport.medium_to_surface = b.transport.direct = b.transport.indirect = false;
+  b.transport.surface_to_surface = b.transport.surface_to_medium = false;
 }
 
 // The room of the room and fog scenes with its lower box: side walls `left` and `right`,

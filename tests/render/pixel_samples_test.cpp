@@ -112,7 +112,7 @@ TEST_CASE("stratified pixel samples: room unbiased, lower error at the stripes' 
   // independent points (Owen, "Monte Carlo variance of scrambled net quadrature", 1997), so
   // its standard error from the pass spread is taken twice in variance: conservative.
   s.transport.medium_to_medium = s.transport.medium_to_surface = s.transport.indirect = false;
-  s.transport.surface_to_surface = false;
+  s.transport.surface_to_surface = s.transport.surface_to_medium = false;
   vrlis::test::BlockEstimate independent_blocks, stratified_blocks;
   render(PixelSamples::Independent, 1, direct_passes, &independent_blocks);
   render(PixelSamples::Stratified, 1, direct_passes, &stratified_blocks);

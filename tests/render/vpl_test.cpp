@@ -42,7 +42,7 @@ RenderSettings Part(const RenderSettings& base, bool vpls, float bound) {
   RenderSettings s = base;
   TransportSettings& t = s.transport;
   t.medium_to_medium = t.medium_to_surface = t.direct = false;
-  t.surface_to_surface = vpls;
+  t.surface_to_surface = t.surface_to_medium = vpls;
   t.indirect = !vpls;
   t.vpl_bound = bound;
   return s;

@@ -7,6 +7,7 @@
 // part continues paths with it.
 #include "scene.hpp"
 #include "transport.hpp"
+#include "vpl.hpp"
 
 namespace vrlis::integration {
 
@@ -16,12 +17,12 @@ class PathTracer {
 
   // Radiance arriving at ray.o along -ray.d. `depth` counts the interactions already on
   // the path; with `skip_first_medium` the first segment only attenuates (its medium
-  // vertices are someone else's: the VRL gathers'). With `vpl_normal` set (and
-  // `skip_first_medium`), ray.o is a diffuse point with that normal whose connections to
-  // diffuse points the VPL gather shares up to the transport's vpl_bound: light from the
-  // first vertex, if diffuse, weighs RemainderShare (vpl.hpp).
+  // vertices are someone else's: the VRL gathers'). With `shared` set (and
+  // `skip_first_medium`), ray.o is a point whose connections to diffuse points the VPL
+  // gathers share up to the transport's vpl_bound: light from the first vertex, if diffuse,
+  // weighs RemainderShare (vpl.hpp).
   Spectrum Li(Ray ray, Rng& rng, int depth = 0, bool skip_first_medium = false,
-              const Vec3f* vpl_normal = nullptr) const;
+              const VplShareStart* shared = nullptr) const;
 
  private:
   const Scene& scene_;

@@ -20,10 +20,12 @@ struct TransportSettings {
   // the comparison's noise decomposition takes the two apart).
   bool single_scattering = true;
   bool indirect = true;           // path-traced remainder (second vertex not a VRL point)
-  // VPLs at the light paths' diffuse vertices gathered at the diffuse point ending the camera
-  // chain (vpl.hpp): the surface-to-surface connections up to the geometry term `vpl_bound`,
-  // the remainder carrying the excess. With vpl_bound = 0 the remainder carries them all.
+  // VPLs at the light paths' diffuse vertices (vpl.hpp), gathered at the diffuse point ending
+  // the camera chain (surface to surface) and along camera segments (surface to medium): the
+  // connections up to the geometry term `vpl_bound`, the remainder carrying the excess. With
+  // vpl_bound = 0 the remainder carries them all.
   bool surface_to_surface = true;
+  bool surface_to_medium = true;
   float vpl_bound = 1;
   // In path-traced parts, light of point lights inside the medium scattered once and then at a
   // scattering vertex is sampled jointly from the vertex (off: along the next segment, whose
