@@ -38,7 +38,7 @@ void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortS
 }  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls,
-                     const std::vector<Vpl>& vpls, Ray ray,
+                     const VplSet& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
                      const vrlis::EffortSettings& surface_effort) {
   const HomogeneousMedium& m = scene.medium;
@@ -65,7 +65,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
-      if (tr.surface_to_medium) L += beta * GatherVpls(tr.sampling.segment, scene, seg, vpls, tr.vpl_bound, rng);
+      if (tr.surface_to_medium) L += beta * GatherVpls(tr.sampling.segment, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
       if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
         float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
         if (d < iv.b) {
@@ -105,7 +105,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
-    if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_bound);
+    if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_samples, tr.vpl_bound, rng);
     if (tr.indirect) {
       float u1 = rng.Uniform(), u2 = rng.Uniform();
       Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};

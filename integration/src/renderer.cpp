@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <utility>
 #include <vector>
 
 #include "vrlis_integration/camera_paths.hpp"
@@ -53,10 +54,11 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   const bool light_paths = scene_.medium.Present() && !scene_.lights.Powers().empty();
   TransportSettings transport = settings_.transport;
   if (!light_paths) transport.vpl_bound = 0;
-  std::vector<Vpl> vpls;
+  std::vector<Vpl> traced;
   std::vector<Vrl> vrls = light_paths ? TraceLightPaths(scene_, transport, settings_.vrls_per_pass, seed, pass,
-                                                        transport.vpl_bound > 0 ? &vpls : nullptr)
+                                                        transport.vpl_bound > 0 ? &traced : nullptr)
                                       : std::vector<Vrl>{};
+  const VplSet vpls(std::move(traced));
   std::atomic<std::uint64_t> gathers{0};
   // What the price learns from this pass, with the effort control on only.
   std::atomic<std::uint64_t> pixel_ns{0};

@@ -1,29 +1,50 @@
 #include "vrlis_integration/vpl.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <vrlis/gather/surface_gather.hpp>
 
 namespace vrlis::integration {
 
-Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, const std::vector<Vpl>& vpls,
-                    float bound) {
-  Spectrum sum;
-  if (!(bound > 0)) return sum;
-  const VplShareStart start{p, nf, true};
-  for (const Vpl& v : vpls) {
-    float g = std::min(GeometryTerm(start, v.p, v.n), bound);
-    if (!(g > 0)) continue;
-    float tr = scene.Connect(p, v.p);
-    if (tr > 0) sum += v.flux * (g * tr);
+VplSet::VplSet(std::vector<Vpl> vpls) : vpls_(std::move(vpls)) {
+  double total = 0;
+  for (std::size_t i = 0; i < vpls_.size(); ++i) {
+    const double w = vpls_[i].flux.Average();
+    if (!(w > 0) || !std::isfinite(w)) continue;
+    total += w;
+    cdf_.push_back(total);
+    index_.push_back(i);
   }
-  return sum * albedo * (1 / (kPi * kPi));
+  for (double& c : cdf_) c /= total;
 }
 
-Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg,
-                    const std::vector<Vpl>& vpls, float bound, Rng& rng) {
+std::pair<const Vpl*, float> VplSet::Sample(float u) const {
+  const auto k = static_cast<std::size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), double(u)) - cdf_.begin());
+  const std::size_t i = std::min(k, cdf_.size() - 1);
+  return {&vpls_[index_[i]], static_cast<float>(cdf_[i] - (i > 0 ? cdf_[i - 1] : 0.0))};
+}
+
+Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, const VplSet& vpls, int samples,
+                    float bound, Rng& rng) {
   Spectrum sum;
-  if (!(bound > 0)) return sum;
+  if (!(bound > 0) || vpls.empty() || samples < 1) return sum;
+  const VplShareStart start{p, nf, true};
+  Rng own = rng.Split();
+  for (int k = 0; k < samples; ++k) {
+    const auto [v, pick] = vpls.Sample(own.Uniform());
+    float g = std::min(GeometryTerm(start, v->p, v->n), bound);
+    if (!(g > 0)) continue;
+    float tr = scene.Connect(p, v->p);
+    if (tr > 0) sum += v->flux * (g * tr / pick);
+  }
+  return sum * albedo * (1 / (kPi * kPi * static_cast<float>(samples)));
+}
+
+Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, const VplSet& vpls,
+                    int samples, float bound, Rng& rng) {
+  Spectrum sum;
+  if (!(bound > 0) || vpls.empty() || samples < 1) return sum;
   const HomogeneousMedium& m = scene.medium;
   const auto medium = vrlis::Medium<float>::FromAbsorptionScattering(m.g, m.sigma_a, m.sigma_s);
   // The segment as the surface gather's line: its transmittance from the line's origin is the
@@ -31,20 +52,18 @@ Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const Camer
   // (light from the VPL along w, on towards the camera along -dir).
   const vrlis::VrlSegment<float> line{seg.ray(seg.iv.a), seg.ray.d, seg.iv.b - seg.iv.a};
   Rng own = rng.Split();
-  for (const Vpl& v : vpls) {
-    const float u = own.Uniform();
-    vrlis::GatherSample<float> s = vrlis::SampleSurfaceGather(method, {v.p, v.n, line, medium}, u);
+  for (int k = 0; k < samples; ++k) {
+    const float u_vpl = own.Uniform(), u = own.Uniform();
+    const auto [v, pick] = vpls.Sample(u_vpl);
+    vrlis::GatherSample<float> s = vrlis::SampleSurfaceGather(method, {v->p, v->n, line, medium}, u);
     if (!s.contributes()) continue;
-    float g = GeometryTerm({s.light_point, {}, false}, v.p, v.n);
-    if (!(g > 0)) continue;
-    float clamp = std::min(1.f, bound / g);
-    if (!scene.geometry->Occluded(s.camera_point, s.light_point)) {
-      float w = s.weight * clamp;
-      if (m.Bounded()) w *= scene.Transmittance(s.camera_point, s.light_point) / s.transmittance;
-      sum += v.flux * w;
-    }
+    float g = GeometryTerm({s.light_point, {}, false}, v->p, v->n);
+    if (!(g > 0) || scene.geometry->Occluded(s.camera_point, s.light_point)) continue;
+    float w = s.weight * std::min(1.f, bound / g) / pick;
+    if (m.Bounded()) w *= scene.Transmittance(s.camera_point, s.light_point) / s.transmittance;
+    sum += v->flux * w;
   }
-  return sum;
+  return sum * (1 / static_cast<float>(samples));
 }
 
 }  // namespace vrlis::integration

@@ -16,19 +16,17 @@
 
 namespace {
 
-using vrlis::integration::Film;
-using vrlis::integration::PassStats;
-using vrlis::integration::RenderSettings;
-using vrlis::integration::TransportSettings;
-using vrlis::integration::VrlRenderer;
+namespace vi = vrlis::integration;
+using vi::RenderSettings;
+using vi::VrlRenderer;
 
 // The sum of two renders' passes (their parts of transport).
-class SumRenderer : public vrlis::integration::Renderer {
+class SumRenderer : public vi::Renderer {
  public:
-  SumRenderer(const vrlis::integration::Scene& scene, const RenderSettings& a, const RenderSettings& b)
+  SumRenderer(const vi::Scene& scene, const RenderSettings& a, const RenderSettings& b)
       : Renderer(scene, a), a_(scene, a), b_(scene, b) {}
-  Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats*) override {
-    Film f = a_.RenderPass(seed, pass, nullptr), g = b_.RenderPass(seed, pass, nullptr);
+  vi::Film RenderPass(std::uint64_t seed, std::uint64_t pass, vi::PassStats*) override {
+    vi::Film f = a_.RenderPass(seed, pass, nullptr), g = b_.RenderPass(seed, pass, nullptr);
     for (std::size_t i = 0; i < f.pixels.size(); ++i) f.pixels[i] += g.pixels[i];
     return f;
   }
@@ -40,7 +38,7 @@ class SumRenderer : public vrlis::integration::Renderer {
 // One part of the transport alone: the VPLs' (surface to surface) or the remainder's.
 RenderSettings Part(const RenderSettings& base, bool vpls, float bound) {
   RenderSettings s = base;
-  TransportSettings& t = s.transport;
+  vi::TransportSettings& t = s.transport;
   t.medium_to_medium = t.medium_to_surface = t.direct = false;
   t.surface_to_surface = t.surface_to_medium = vpls;
   t.indirect = !vpls;

@@ -25,7 +25,7 @@ struct GatherCount {
 // pass's VPLs: with the transport's vpl_bound above 0 they share the surface-to-surface
 // connections with the remainder whether or not the pass has any.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls,
-                     const std::vector<Vpl>& vpls, Ray ray,
+                     const VplSet& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort = {},
                      const vrlis::EffortSettings& surface_effort = {});
 

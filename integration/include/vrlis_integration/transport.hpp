@@ -27,6 +27,7 @@ struct TransportSettings {
   bool surface_to_surface = true;
   bool surface_to_medium = true;
   float vpl_bound = 1;
+  int vpl_samples = 8;  // VPLs each of those gathers connects, chosen in proportion to flux
   // In path-traced parts, light of point lights inside the medium scattered once and then at a
   // scattering vertex is sampled jointly from the vertex (off: along the next segment, whose
   // weight has unbounded variance next to the light; docs/maths.md#two-point).

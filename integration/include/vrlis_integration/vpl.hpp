@@ -8,7 +8,9 @@
 // exceeds the bound b is taken by the VPL at b, and the remainder carries the excess with the
 // weight 1 - b / G. The two weights add to one for every path, so the sum stays unbiased; the
 // VPL's weight is bounded where it would be singular, and the remainder stops at every vertex
-// a VPL covers whole. docs/renderer.md has the decomposition.
+// a VPL covers whole. A gather connects a few VPLs chosen in proportion to their flux, not
+// all of them (a pass may have hundreds). docs/renderer.md has the decomposition.
+#include <utility>
 #include <vector>
 
 #include <vrlis/method.hpp>
@@ -22,6 +24,21 @@ namespace vrlis::integration {
 struct Vpl {
   Vec3f p{}, n{};   // n: the unit normal on the side the light arrived from
   Spectrum flux{};  // the light path's flux arriving at p times the surface's albedo
+};
+
+// A pass's VPLs, chosen in proportion to their flux (the channels' mean).
+class VplSet {
+ public:
+  VplSet() = default;
+  explicit VplSet(std::vector<Vpl> vpls);
+  bool empty() const { return cdf_.empty(); }
+  // The VPL for the uniform u in [0, 1) and the probability of choosing it.
+  std::pair<const Vpl*, float> Sample(float u) const;
+
+ private:
+  std::vector<Vpl> vpls_;
+  std::vector<double> cdf_;  // of the VPLs with positive flux, ending at 1
+  std::vector<std::size_t> index_;
 };
 
 // Where a camera path leaves for a diffuse point that a VPL could be: a diffuse point (with
@@ -46,13 +63,15 @@ inline float GeometryTerm(const VplShareStart& a, Vec3f b, Vec3f nb) {
 inline float RemainderShare(float g, float bound) { return g > bound ? 1 - bound / g : 0.f; }
 
 // Radiance reflected towards the viewer by the diffuse point p (normal nf facing the viewer,
-// albedo) from every VPL, each connection's geometry term clamped at `bound`.
-Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, const std::vector<Vpl>& vpls, float bound);
+// albedo) from the VPLs: `samples` connections, each connection's geometry term clamped at
+// `bound`.
+Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, const VplSet& vpls, int samples,
+                    float bound, Rng& rng);
 
-// Radiance along the camera segment from every VPL's light scattered once on it, one point
-// per VPL by `method` (the library's surface gather with the segment as its line), each
-// sample's geometry term clamped at `bound`.
-Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg,
-                    const std::vector<Vpl>& vpls, float bound, Rng& rng);
+// Radiance along the camera segment from the VPLs' light scattered once on it: `samples`
+// VPLs, a point on the segment for each by `method` (the library's surface gather with the
+// segment as its line), each sample's geometry term clamped at `bound`.
+Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, const VplSet& vpls,
+                    int samples, float bound, Rng& rng);
 
 }  // namespace vrlis::integration
