@@ -135,9 +135,9 @@ int main(int argc, char** argv) {
                                                    "(0,2)-sequence (lower error of the mean, passes not independent); "
                                                    "independent: a fresh uniform point per pass")
       ->capture_default_str();
-  app.add_option("--vpl-bound", vpl_bound, "VPLs at the light paths' diffuse vertices take the surface-to-surface "
-                                           "connections up to this geometry term cos cos / r^2, the path-traced "
-                                           "remainder the excess (Kollig and Keller 2004); 0: no VPLs")
+  app.add_option("--vpl-bound", vpl_bound, "VPLs at the light paths' diffuse vertices take the connections to them "
+                                           "up to this geometry term (cos cos / r^2; cos / r^2 from the medium), "
+                                           "the path-traced remainder the excess (Kollig and Keller 2004); 0: no VPLs")
       ->check(CLI::Range(0.f, std::numeric_limits<float>::max()))
       ->capture_default_str();
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");

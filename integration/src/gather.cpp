@@ -7,11 +7,13 @@
 #include <vrlis/samplers/equiangular.hpp>
 
 namespace vrlis::integration {
-namespace {
 
 vrlis::Medium<float> MediumOf(const HomogeneousMedium& m) {
   return vrlis::Medium<float>::FromAbsorptionScattering(m.g, m.sigma_a, m.sigma_s);
 }
+
+namespace {
+
 vrlis::RaySegment<float> SegmentOf(const CameraSegment& seg) { return {seg.ray.o, seg.ray.d, seg.iv.a, seg.iv.b}; }
 vrlis::VrlSegment<float> SegmentOf(const Vrl& vrl) { return {vrl.origin, vrl.dir, vrl.length}; }
 
@@ -22,9 +24,15 @@ float Connect(const Scene& scene, Vec3f a, Vec3f b, float weight, float transmit
   if (!scene.medium.Bounded()) return weight;
   return weight * (scene.Transmittance(a, b) / transmittance);
 }
+
+}  // namespace
+
 float Connect(const Scene& scene, const vrlis::GatherSample<float>& s) {
   return Connect(scene, s.camera_point, s.light_point, s.weight, s.transmittance);
 }
+
+namespace {
+
 // A point light's cone is the renderer's: the library's point light emits everywhere.
 float Connect(const Scene& scene, const PointLight& light, const vrlis::GatherSample<float>& s) {
   return light.Lights(s.camera_point) ? Connect(scene, s) : 0.f;

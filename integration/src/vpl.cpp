@@ -45,8 +45,7 @@ Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const Camer
                     int samples, float bound, Rng& rng) {
   Spectrum sum;
   if (!(bound > 0) || vpls.empty() || samples < 1) return sum;
-  const HomogeneousMedium& m = scene.medium;
-  const auto medium = vrlis::Medium<float>::FromAbsorptionScattering(m.g, m.sigma_a, m.sigma_s);
+  const vrlis::Medium<float> medium = MediumOf(scene.medium);
   // The segment as the surface gather's line: its transmittance from the line's origin is the
   // camera's from iv.a, and its phase argument -dir . w is the scattering angle's cosine
   // (light from the VPL along w, on towards the camera along -dir).
@@ -56,12 +55,9 @@ Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const Camer
     const float u_vpl = own.Uniform(), u = own.Uniform();
     const auto [v, pick] = vpls.Sample(u_vpl);
     vrlis::GatherSample<float> s = vrlis::SampleSurfaceGather(method, {v->p, v->n, line, medium}, u);
-    if (!s.contributes()) continue;
     float g = GeometryTerm({s.light_point, {}, false}, v->p, v->n);
-    if (!(g > 0) || scene.geometry->Occluded(s.camera_point, s.light_point)) continue;
-    float w = s.weight * std::min(1.f, bound / g) / pick;
-    if (m.Bounded()) w *= scene.Transmittance(s.camera_point, s.light_point) / s.transmittance;
-    sum += v->flux * w;
+    if (!s.contributes() || !(g > 0)) continue;
+    sum += v->flux * (Connect(scene, s) * std::min(1.f, bound / g) / pick);
   }
   return sum * (1 / static_cast<float>(samples));
 }

@@ -22,8 +22,8 @@ struct GatherCount {
 };
 
 // The transport's effort control with the pass's prices of the two gathers. `vpls` are the
-// pass's VPLs: with the transport's vpl_bound above 0 they share the surface-to-surface
-// connections with the remainder whether or not the pass has any.
+// pass's VPLs: with the transport's vpl_bound above 0 they share the connections to diffuse
+// points with the remainder whether or not the pass has any.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls,
                      const VplSet& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort = {},

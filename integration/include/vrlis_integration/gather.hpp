@@ -2,6 +2,7 @@
 // The VRL estimators of docs/maths.md#estimators, one sample each, as a renderer uses the
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
 #include <vrlis/gather/effort.hpp>
+#include <vrlis/gather/gather_sample.hpp>
 #include <vrlis/method.hpp>
 
 #include <vector>
@@ -20,6 +21,14 @@ struct CameraSegment {
   Ray ray;
   Interval iv;
 };
+
+// The scene's homogeneous medium as the library's.
+vrlis::Medium<float> MediumOf(const HomogeneousMedium& m);
+
+// A gather sample's weight times the visibility of its two points, the connection's
+// transmittance the scene's where the medium is bounded (the library's assumes it fills the
+// connection): 0 for a sample that does not contribute.
+float Connect(const Scene& scene, const vrlis::GatherSample<float>& s);
 
 // Radiance along the camera ray from light scattered at a VRL point and again on the segment
 // (the single-VRL form of the sum below, which the comparison uses per VRL).

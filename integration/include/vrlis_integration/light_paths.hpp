@@ -1,6 +1,6 @@
 #pragma once
 // The light pass: trace light paths from the lights and record every medium segment as a
-// VRL and, for the surface-to-surface gather, every diffuse vertex as a VPL.
+// VRL and, for the VPL gathers (vpl.hpp), every diffuse vertex as a VPL.
 #include <cstdint>
 #include <vector>
 
