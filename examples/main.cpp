@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
   std::string scene_name, sampler = "cauchy-sum", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
+  std::optional<float> vrl_bound;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
@@ -140,6 +141,10 @@ int main(int argc, char** argv) {
                                            "the path-traced remainder the excess (Kollig and Keller 2004); 0: no VPLs")
       ->check(CLI::Range(0.f, std::numeric_limits<float>::max()))
       ->capture_default_str();
+  app.add_option("--vrl-bound", vrl_bound, "The VRL gathers take their connections up to this geometry term (1 / r^2; "
+                                           "cos / r^2 at a surface), the remainder the excess; inf: the gathers take "
+                                           "all (default: the scene's, 1 in corner, inf elsewhere)")
+      ->check(CLI::Range(0.f, std::numeric_limits<float>::infinity()));
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");
   app.add_flag("--no-caustics", no_caustics, "Stop light paths at a specular surface met before any "
                                              "scattering (what a path tracer with point lights can render)");
@@ -172,6 +177,8 @@ int main(int argc, char** argv) {
   if (integrator != "vrl" && integrator != "path") return Fail("unknown integrator '" + integrator + "' (expected vrl or path)");
   if (gather != "all" && gather != "m2m" && gather != "m2s") return Fail("unknown gather '" + gather + "' (expected all, m2m or m2s)");
   if (g && !(std::abs(*g) < 1)) return Fail("--g must lie in (-1, 1), got " + std::to_string(*g));
+  if (!(vpl_bound >= 0) || !std::isfinite(vpl_bound)) return Fail("--vpl-bound must be finite and >= 0");
+  if (vrl_bound && !(*vrl_bound >= 0)) return Fail("--vrl-bound must be >= 0 (inf: no bound)");
   if (sigma_s && !(*sigma_s >= 0 && std::isfinite(*sigma_s))) return Fail("--sigma-s must be finite and >= 0");
   if (sigma_a && !(*sigma_a >= 0 && std::isfinite(*sigma_a))) return Fail("--sigma-a must be finite and >= 0");
   if (width < 1 || height < 1) return Fail("--width and --height must be positive");
@@ -217,6 +224,7 @@ int main(int argc, char** argv) {
   settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
   settings.transport.vpl_bound = vpl_bound;
+  if (vrl_bound) settings.transport.vrl_bound = *vrl_bound;
   settings.transport.effort.on = effort == "on";
   std::atomic<int> rows_done{0};
   settings.rows_done = &rows_done;
@@ -225,6 +233,7 @@ int main(int argc, char** argv) {
     settings.transport.medium_to_surface = gather == "m2s";
     settings.transport.direct = settings.transport.indirect = false;
     settings.transport.surface_to_surface = settings.transport.surface_to_medium = false;
+    settings.transport.vrl_bound = vrlis::integration::kUnbounded;  // the gather whole: no remainder takes a share
   }
   vrlis::integration::QueryLog query_log(dump_every);
   if (!dump_queries.empty()) settings.transport.query_log = &query_log;
@@ -283,7 +292,7 @@ int main(int argc, char** argv) {
       {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather}, {"effort", effort},
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
-      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
+      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"vrl_bound", settings.transport.vrl_bound < vrlis::integration::kUnbounded ? nlohmann::json(settings.transport.vrl_bound) : nlohmann::json("inf")}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
       {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds},
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;

@@ -29,7 +29,7 @@ std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::Transpo
   for (GatherSamplers s : Mixture(c)) key << SamplerName(s) << ",";
   key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect
       << t.light_caustics << t.first_segment_only << t.surface_to_surface << t.surface_to_medium << "/" << t.max_depth << "/" << t.rr_depth
-      << "/" << t.vpl_bound;
+      << "/" << t.vpl_bound << "/" << t.vrl_bound;
   return key.str();
 }
 

@@ -29,10 +29,12 @@ inline StudyScene BuildStudyScene(const std::string& name, const vrlis::scenes::
   return {std::move(*built), settings};
 }
 
-// Only the two VRL gathers: no direct lighting, single scattering, VPLs or path-traced remainder.
+// Only the two VRL gathers, whole: no direct lighting, single scattering, VPLs or path-traced
+// remainder, which would take a share of their connections.
 inline void KeepVrlGathersOnly(StudyScene& s) {
   vrlis::integration::TransportSettings& t = s.settings.transport;
   t.direct = t.single_scattering = t.indirect = false;
+  t.vrl_bound = vrlis::integration::kUnbounded;
   t.surface_to_surface = t.surface_to_medium = false;
   t.medium_to_medium = true;
   t.medium_to_surface = s.built.has_surfaces;

@@ -58,7 +58,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         {
           Timer timer(effort.on, &stats.seconds);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
-                                                 effort.on ? &stats : nullptr, tr.weight_log);
+                                                 effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
         }
         if (effort.on) AddCall(effort, gathered, &stats);
         L += gathered;
@@ -71,8 +71,8 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         if (d < iv.b) {
           float u1 = rng.Uniform(), u2 = rng.Uniform();
           Ray next{ray(d), SamplePhase(m.g, ray.d, u1, u2)};
-          const VplShareStart start{next.o, {}, false};
-          L += beta * m.Albedo() * remainder.Li(next, rng, depth + 1, true, tr.vpl_bound > 0 ? &start : nullptr);
+          const RemainderStart start{{next.o, {}, false}, {ray.d, m.g, false}};
+          L += beta * m.Albedo() * remainder.Li(next, rng, depth + 1, &start);
         }
       }
       beta *= std::exp(-m.SigmaT() * iv.Length());  // on to the surface
@@ -98,7 +98,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       {
         Timer timer(effort.on, &stats.seconds);
         gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
-                                                effort, effort.on ? &stats : nullptr, tr.weight_log);
+                                                effort, effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
       }
       if (effort.on) AddCall(effort, gathered, &stats);
       L += gathered;
@@ -109,8 +109,8 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (tr.indirect) {
       float u1 = rng.Uniform(), u2 = rng.Uniform();
       Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
-      const VplShareStart start{hit.p, nf, true};
-      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, true, tr.vpl_bound > 0 ? &start : nullptr);
+      const RemainderStart start{{hit.p, nf, true}, {nf, 0, true}};
+      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, &start);
     }
     break;
   }

@@ -54,9 +54,9 @@ namespace {
 // on the stack, the scene's visibility as the callback.
 constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
-template <typename GatherChunk>
+template <typename GatherShareOf, typename GatherChunk>
 Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput, EffortStats* stats,
-                       WeightLog* weight_log, GatherChunk&& gather_chunk) {
+                       WeightLog* weight_log, GatherShareOf&& share, GatherChunk&& gather_chunk) {
   Spectrum sum;
   vrlis::EffortTally tally;
   EffortStats taken;
@@ -71,7 +71,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       weights[i] = (throughput * chunk[i].flux).Rms();
     }
     auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
-      Spectrum x = chunk[i].flux * (Connect(scene, s) * effort_weight);
+      Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
       sum += x;
       if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
       if (!stats) return;
@@ -96,17 +96,25 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   return sum;
 }
 
+// The gather's share of a sample's connection from `from` to the VRL point (share.hpp).
+float GatherShareOf(const ConnectionEnd& from, const vrlis::GatherSample<float>& s, float bound) {
+  return bound < kUnbounded ? GatherShare(GeometryTerm(from, {s.light_point, {}, false}), bound) : 1.f;
+}
+
 // The medium-to-medium sum over the VRLs [first, last).
 Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput,
-                    const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log) {
+                    const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, float bound) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
   if (log)
     for (const Vrl* vrl = first; vrl != last; ++vrl)
       log->Record({camera, SegmentOf(*vrl), medium}, (throughput * vrl->flux).Rms());
-  return SumOverChunks(scene, first, last, throughput, stats, weight_log,
+  auto share = [&](const vrlis::GatherSample<float>& s) {
+    return GatherShareOf({s.camera_point, {}, false}, s, bound);
+  };
+  return SumOverChunks(scene, first, last, throughput, stats, weight_log, share,
                        [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
                            vrlis::EffortTally* tally) {
                          vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
@@ -118,22 +126,27 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
-  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr);
+  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr, kUnbounded);
 }
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput,
-                              const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log) {
+                              const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
+                              float bound) {
   return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats,
-                    weight_log);
+                    weight_log, bound);
 }
 
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
-                               const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log) {
+                               const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
+                               float bound) {
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
+  const ConnectionEnd from{p, nf, true};
+  auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, bound); };
   return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, stats, weight_log,
+                                share,
                                 [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
                                     auto& connect, vrlis::EffortTally* tally) {
                                   vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,
@@ -142,14 +155,15 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
 }
 
 Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng,
-                          bool after_vertex) {
+                          bool after_vertex, const MediumShare* share) {
   const HomogeneousMedium& m = scene.medium;
   Spectrum sum;
   for (const PointLight& l : scene.lights.points) {
     if (l.fibonacci_beams) continue;  // delta directions: a camera ray never meets a beam
     if (after_vertex && GatheredAtVertex(scene, l)) continue;
     vrlis::PointLightGatherQuery<float> q{SegmentOf(seg), l.position, MediumOf(m)};
-    sum += l.intensity * Connect(scene, l, vrlis::SamplePointLightGather(method, q, rng.Uniform()));
+    const vrlis::GatherSample<float> s = vrlis::SamplePointLightGather(method, q, rng.Uniform());
+    sum += l.intensity * (Connect(scene, l, s) * (share ? (*share)(s.camera_point) : 1.f));
   }
   for (const CollimatedRect& l : scene.lights.rects) {
     // A collimated beam: a distance uniform on the part of the segment inside the beam.
@@ -160,7 +174,7 @@ Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const
     Vec3f x = seg.ray(u);
     std::optional<LightSample> ls = SampleLight(l, x);
     if (!ls) continue;  // on the beam's edge, to rounding
-    float w = m.sigma_s * std::exp(-m.SigmaT() * (u - seg.iv.a)) * (b - a);
+    float w = m.sigma_s * std::exp(-m.SigmaT() * (u - seg.iv.a)) * (b - a) * (share ? (*share)(x) : 1.f);
     float tr = scene.Connect(x, ls->source);
     if (tr > 0) sum += ls->value * (w * Phase(m.g, Dot(ls->wi, seg.ray.d)) * tr);
   }
@@ -175,7 +189,8 @@ bool GatheredAtVertex(const Scene& scene, const PointLight& light) {
   return !light.fibonacci_beams && scene.medium.Contains(light.position);
 }
 
-Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& lobe, Rng& rng) {
+Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& lobe, Rng& rng,
+                                const MediumShare* share) {
   constexpr vrlis::SegmentChoice kEquiangular = vrlis::SegmentSamplers::Of<vrlis::EquiangularEntry>();
   Spectrum sum;
   for (const PointLight& l : scene.lights.points) {
@@ -192,7 +207,8 @@ Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& l
     CameraSegment seg{ray, scene.medium.Clip(ray, found ? hit.t : kInfinity)};
     if (seg.iv.Empty()) continue;
     vrlis::PointLightGatherQuery<float> q{SegmentOf(seg), l.position, MediumOf(scene.medium)};
-    sum += l.intensity * (Connect(scene, l, vrlis::SamplePointLightGather(kEquiangular, q, u3)) * (f / pdf));
+    const vrlis::GatherSample<float> s = vrlis::SamplePointLightGather(kEquiangular, q, u3);
+    sum += l.intensity * (Connect(scene, l, s) * (f / pdf) * (share ? (*share)(s.camera_point) : 1.f));
   }
   return sum;
 }

@@ -29,12 +29,13 @@ Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, cons
                     float bound, Rng& rng) {
   Spectrum sum;
   if (!(bound > 0) || vpls.empty() || samples < 1) return sum;
-  const VplShareStart start{p, nf, true};
+  const ConnectionEnd start{p, nf, true};
   Rng own = rng.Split();
   for (int k = 0; k < samples; ++k) {
     const auto [v, pick] = vpls.Sample(own.Uniform());
-    float g = std::min(GeometryTerm(start, v->p, v->n), bound);
+    float g = GeometryTerm(start, {v->p, v->n, true});
     if (!(g > 0)) continue;
+    g *= GatherShare(g, bound);
     float tr = scene.Connect(p, v->p);
     if (tr > 0) sum += v->flux * (g * tr / pick);
   }
@@ -55,9 +56,9 @@ Spectrum GatherVpls(vrlis::SegmentChoice method, const Scene& scene, const Camer
     const float u_vpl = own.Uniform(), u = own.Uniform();
     const auto [v, pick] = vpls.Sample(u_vpl);
     vrlis::GatherSample<float> s = vrlis::SampleSurfaceGather(method, {v->p, v->n, line, medium}, u);
-    float g = GeometryTerm({s.light_point, {}, false}, v->p, v->n);
+    float g = GeometryTerm({s.light_point, {}, false}, {v->p, v->n, true});
     if (!s.contributes() || !(g > 0)) continue;
-    sum += v->flux * (Connect(scene, s) * std::min(1.f, bound / g) / pick);
+    sum += v->flux * (Connect(scene, s) * GatherShare(g, bound) / pick);
   }
   return sum * (1 / static_cast<float>(samples));
 }

@@ -74,6 +74,9 @@ void Cube(BuiltScene& b, EmbreeGeometry& g) {
 
 void Corner(BuiltScene& b, EmbreeGeometry& g) {
   vrlis::integration::Scene& s = b.scene;
+  // VRLs pass within a few mean free paths of the camera's surfaces and segments, where the
+  // gathers' 1 / r^2 gives rare large samples: the remainder takes connections closer than 1.
+  b.transport.vrl_bound = 1;
   int grey = Diffuse(s, Spectrum(0.5f));
   struct Plane {
     Vec3f n;

@@ -59,6 +59,8 @@ TEST_CASE("bad input exits with code 2, one line, and writes nothing", "[render]
       {"--scene cube --time 0", "--time"},
       {"--scene cube --time -2", "--time"},
       {"--scene cube --vrls 0", "--vrls"},
+      {"--scene cube --vpl-bound nan", "--vpl-bound"},
+      {"--scene cube --vrl-bound nan", "--vrl-bound"},
       {"--scene cube --pixel-samples sobol", "--pixel-samples"},
       {"--scene cube --reference /nonexistent-dir/ref.exr", "cannot read reference"},
       {"--scene cube --no-such-option", "no-such-option"},

@@ -68,7 +68,7 @@ TEST_CASE("cube: VRL image matches the path tracer", "[render][reference]") {
 }
 
 TEST_CASE("corner: VRL image matches the path tracer", "[render][reference]") {
-  Run({"corner", NthSampler(3), 16, 16, 200, 64, 4096, 1.5});
+  Run({"corner", NthSampler(3), 16, 16, 200, 64, 4096, 1.25});
 }
 
 TEST_CASE("cloud: VRL image matches the path tracer", "[render][reference]") {

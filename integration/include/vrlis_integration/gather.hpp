@@ -10,6 +10,7 @@
 #include "effort_price.hpp"
 #include "query_log.hpp"
 #include "scene.hpp"
+#include "share.hpp"
 #include "vrl.hpp"
 #include "weight_log.hpp"
 
@@ -40,11 +41,13 @@ Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, 
 // order: the camera pass's inner loop, one call of the library's GatherMediumVrls. With the
 // effort control (vrlis/gather/effort.hpp) each VRL is gathered q times on average, q from its
 // predicted contribution throughput x flux; `stats`, if set, adds what the price learns from;
-// `weight_log`, if set, records every sample taken (weight_log.hpp).
+// `weight_log`, if set, records every sample taken (weight_log.hpp). Each sample's connection
+// is taken up to the geometry term `bound` (share.hpp; the remainder carries the rest).
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
                               Spectrum throughput = Spectrum(1.f), const vrlis::EffortSettings& effort = {},
-                              EffortStats* stats = nullptr, WeightLog* weight_log = nullptr);
+                              EffortStats* stats = nullptr, WeightLog* weight_log = nullptr,
+                              float bound = kUnbounded);
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
@@ -53,18 +56,20 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
 // each): the sampler is chosen and the point and medium validated once for all the VRLs
-// (the library's GatherSurfaceVrls; effort, stats and weight_log as in GatherMediumToMedium).
+// (the library's GatherSurfaceVrls; effort, stats, weight_log and bound as in
+// GatherMediumToMedium).
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput = Spectrum(1.f),
                                const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr,
-                               WeightLog* weight_log = nullptr);
+                               WeightLog* weight_log = nullptr, float bound = kUnbounded);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance on the part inside the beam). `after_vertex`: the segment leaves a
 // scattering vertex that VertexSingleScattering already gathered at, so the point lights it
-// covers are left out.
+// covers are left out. With `share`, each sample weighs the remainder's share of its
+// connection (the segment leaves a camera vertex whose VRL gathers took the rest).
 Spectrum SingleScattering(vrlis::SegmentChoice method, const Scene& scene, const CameraSegment& seg, Rng& rng,
-                          bool after_vertex = false);
+                          bool after_vertex = false, const MediumShare* share = nullptr);
 
 // How a scattering vertex sends light on: the phase function about the direction of travel
 // into a medium vertex, or the cosine about a diffuse point's normal (the albedo is the
@@ -84,6 +89,8 @@ bool GatheredAtVertex(const Scene& scene, const PointLight& light);
 // Light of the point lights GatheredAtVertex covers, scattered once in the medium and then at
 // the vertex p through `lobe`: the direction from p by vrlis::SampleTwoPointDirection, the
 // distance on its medium segment by equiangular sampling about the light.
-Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& lobe, Rng& rng);
+// `share` as in SingleScattering.
+Spectrum VertexSingleScattering(const Scene& scene, Vec3f p, const VertexLobe& lobe, Rng& rng,
+                                const MediumShare* share = nullptr);
 
 }  // namespace vrlis::integration

@@ -7,22 +7,28 @@
 // part continues paths with it.
 #include "scene.hpp"
 #include "transport.hpp"
-#include "vpl.hpp"
+#include "gather.hpp"
+#include "share.hpp"
 
 namespace vrlis::integration {
+
+// Where the remainder leaves a camera vertex: the vertex as one end of its connections, and
+// how it scatters (the light it gathers jointly with VertexSingleScattering).
+struct RemainderStart {
+  ConnectionEnd from;
+  VertexLobe lobe;
+};
 
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const TransportSettings& transport) : scene_(scene), tr_(transport) {}
 
   // Radiance arriving at ray.o along -ray.d. `depth` counts the interactions already on
-  // the path; with `skip_first_medium` the first segment only attenuates (its medium
-  // vertices are someone else's: the VRL gathers'). With `shared` set (and
-  // `skip_first_medium`), ray.o is a point whose connections to diffuse points the VPL
-  // gathers share up to the transport's vpl_bound: light from the first vertex, if diffuse,
-  // weighs RemainderShare (vpl.hpp).
-  Spectrum Li(Ray ray, Rng& rng, int depth = 0, bool skip_first_medium = false,
-              const VplShareStart* shared = nullptr) const;
+  // the path. With `start`, ray.o is a camera vertex whose gathers took part of its
+  // connections (share.hpp): the VRL gathers those to medium points up to the transport's
+  // vrl_bound (kUnbounded: all of them, and the first segment only attenuates), the VPL
+  // gathers those to diffuse points up to its vpl_bound; the path carries the rest.
+  Spectrum Li(Ray ray, Rng& rng, int depth = 0, const RemainderStart* start = nullptr) const;
 
  private:
   const Scene& scene_;

@@ -4,6 +4,8 @@
 #include <vrlis/gather/effort.hpp>
 #include <vrlis/method.hpp>
 
+#include "share.hpp"
+
 namespace vrlis::integration {
 
 class QueryLog;
@@ -28,6 +30,12 @@ struct TransportSettings {
   bool surface_to_medium = true;
   float vpl_bound = 1;
   int vpl_samples = 8;  // VPLs each of those gathers connects, chosen in proportion to flux
+  // The VRL gathers' connections the same way (share.hpp): each up to the geometry term
+  // `vrl_bound` (1 / r^2 medium to medium, cos / r^2 medium to surface), the remainder
+  // sampling the camera vertex's next medium segment for the excess. kUnbounded: the gathers
+  // carry every connection whole (a scene whose VRLs pass close to surfaces or the camera's
+  // segments sets a bound: corner).
+  float vrl_bound = kUnbounded;
   // In path-traced parts, light of point lights inside the medium scattered once and then at a
   // scattering vertex is sampled jointly from the vertex (off: along the next segment, whose
   // weight has unbounded variance next to the light; docs/maths.md#two-point).
