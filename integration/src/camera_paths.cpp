@@ -35,14 +35,33 @@ void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortS
   stats->call_m2 += rate * contribution.MeanSquare();
 }
 
+// The remainder's paths from one camera vertex: EffortSamples(rate) of them, each weighted
+// 1 / rate, so the sum keeps its mean whatever the rate; `stats`, if set, adds what the
+// price learns from. `path` returns one path's contribution.
+template <typename Path>
+Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, Path&& path) {
+  if (rate == 1 && !stats) return path();
+  Timer timer(stats != nullptr, stats ? &stats->seconds : nullptr);
+  const int n = rate == 1 ? 1 : vrlis::EffortSamples(rate, rng.Uniform());
+  Spectrum sum;
+  for (int i = 0; i < n; ++i) {
+    const Spectrum y = path();
+    if (stats) stats->m2 += y.MeanSquare() / rate;
+    sum += y;
+  }
+  if (stats) stats->launches += 1, stats->paths += n;
+  return sum * static_cast<float>(1 / rate);
+}
+
 }  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls,
                      const VplSet& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
-                     const vrlis::EffortSettings& surface_effort) {
+                     const vrlis::EffortSettings& surface_effort, double remainder_rate) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
+  RemainderStats* remainder_stats = medium_effort.on ? &count->remainder : nullptr;
   Spectrum L, beta(1.f);
   for (int depth = 0; depth < tr.max_depth; ++depth) {
     SurfaceHit hit;
@@ -66,15 +85,15 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
       if (tr.surface_to_medium) L += beta * GatherVpls(tr.sampling.segment, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
-      if (tr.indirect) {  // a medium vertex by free flight, continued by path tracing
-        float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
-        if (d < iv.b) {
+      if (tr.indirect)  // a medium vertex by free flight, continued by path tracing
+        L += SplitRemainder(remainder_rate, rng, remainder_stats, [&] {
+          float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
+          if (!(d < iv.b)) return Spectrum();
           float u1 = rng.Uniform(), u2 = rng.Uniform();
           Ray next{ray(d), SamplePhase(m.g, ray.d, u1, u2)};
           const RemainderStart start{{next.o, {}, false}, {ray.d, m.g, false}};
-          L += beta * m.Albedo() * remainder.Li(next, rng, depth + 1, &start);
-        }
-      }
+          return beta * m.Albedo() * remainder.Li(next, rng, depth + 1, &start);
+        });
       beta *= std::exp(-m.SigmaT() * iv.Length());  // on to the surface
     }
     if (!found) break;
@@ -106,12 +125,13 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     }
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_samples, tr.vpl_bound, rng);
-    if (tr.indirect) {
-      float u1 = rng.Uniform(), u2 = rng.Uniform();
-      Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
-      const RemainderStart start{{hit.p, nf, true}, {nf, 0, true}};
-      L += beta * mat.albedo * remainder.Li(next, rng, depth + 1, &start);
-    }
+    if (tr.indirect)
+      L += SplitRemainder(remainder_rate, rng, remainder_stats, [&] {
+        float u1 = rng.Uniform(), u2 = rng.Uniform();
+        Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
+        const RemainderStart start{{hit.p, nf, true}, {nf, 0, true}};
+        return beta * mat.albedo * remainder.Li(next, rng, depth + 1, &start);
+      });
     break;
   }
   return L;

@@ -13,10 +13,15 @@ EffortPrice::EffortPrice(int width, int height)
   for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_);
   const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * ((height + kTile - 1) / kTile);
   for (auto& kind : tiles_) kind.resize(tiles);
+  remainder_tiles_.resize(tiles);
 }
 
 void EffortPrice::Add(const Film& pass, double pixel_seconds, const std::vector<EffortStats>& medium,
-                      const std::vector<EffortStats>& surface) {
+                      const std::vector<EffortStats>& surface, const std::vector<RemainderStats>& remainder) {
+  for (std::size_t i = 0; i < pixels_; ++i) {
+    remainder_ += remainder[i];
+    remainder_tiles_[Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += remainder[i];
+  }
   const std::vector<EffortStats>* stats[2] = {&medium, &surface};
   EffortStats total[2];
   for (int kind = 0; kind < 2; ++kind)
@@ -86,6 +91,15 @@ void EffortPrice::Refresh() {
                        ? calibration * pixel_cost / (variance * gather_cost)
                        : 0;
   }
+}
+
+double EffortPrice::remainder_demand(int x, int y) const {
+  const RemainderStats& tile = remainder_tiles_[Tile(x, y)];
+  constexpr double kFewPaths = 16;  // below which a tile's cost is too noisy
+  const RemainderStats& timed = tile.paths >= kFewPaths ? tile : remainder_;
+  const double cost = timed.paths > 0 ? timed.seconds / timed.paths : 0;
+  if (!(value_of_time_ > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
+  return std::sqrt(tile.m2 / tile.launches / cost * value_of_time_);
 }
 
 double EffortPrice::call_demand(GatherKind kind, int x, int y) const {

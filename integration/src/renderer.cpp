@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <utility>
@@ -65,6 +66,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   const vrlis::EffortSettings& effort = settings_.transport.effort;
   const std::size_t pixels = effort.on ? static_cast<std::size_t>(settings_.width) * settings_.height : 0;
   std::vector<EffortStats> medium_stats(pixels), surface_stats(pixels);
+  std::vector<RemainderStats> remainder_stats(pixels);
   vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
   medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
   surface_effort.price = price_.price(GatherKind::Surface);
@@ -80,16 +82,20 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     vrlis::EffortSettings m = medium_effort, s = surface_effort;
     m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
     s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
+    // The remainder is split where it asks for more paths, never rouletted: its paths cost too
+    // little where it asks for fewer (room: 1 ms of a 78 ms pass) to repay larger weights.
+    const double rate = std::clamp(price_.remainder_demand(x, y), 1.0, effort.ceiling);
     auto p0 = std::chrono::steady_clock::now();
-    Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s);
+    Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate);
     pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
     medium_stats[i] = count.medium_effort;
     surface_stats[i] = count.surface_effort;
+    remainder_stats[i] = count.remainder;
     return L;
   });
-  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats, surface_stats);
+  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats, surface_stats, remainder_stats);
   if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
   return film;
 }

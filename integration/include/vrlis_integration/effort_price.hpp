@@ -35,6 +35,17 @@ struct EffortStats {
   }
 };
 
+// What a pixel's path-traced remainder tells the price in a pass (docs/maths.md#effort-remainder):
+// the camera vertices it left, the paths it traced from them, their seconds, and the sum over
+// the paths of (contribution to the pixel)^2 / rate, an unbiased estimate of the second moment
+// of one path per vertex.
+struct RemainderStats {
+  double launches = 0, paths = 0, seconds = 0, m2 = 0;
+  void operator+=(const RemainderStats& o) {
+    launches += o.launches, paths += o.paths, seconds += o.seconds, m2 += o.m2;
+  }
+};
+
 // The two gathers, each with its own calibration and cost: their bounds are not equally tight.
 enum class GatherKind { Medium, Surface };
 
@@ -50,9 +61,9 @@ class EffortPrice {
   EffortPrice(int width, int height);
 
   // One finished pass: its image, the seconds its pixels took (summed over threads) and
-  // what each pixel's medium-to-medium and medium-to-surface gathers tell.
+  // what each pixel's medium-to-medium and medium-to-surface gathers and its remainder tell.
   void Add(const Film& pass, double pixel_seconds, const std::vector<EffortStats>& medium,
-           const std::vector<EffortStats>& surface);
+           const std::vector<EffortStats>& surface, const std::vector<RemainderStats>& remainder);
   // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
   // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
   // gather taken once).
@@ -68,6 +79,11 @@ class EffortPrice {
   // both from the earlier calls of the pixel's tile (the seconds from the kind's calls while
   // the tile has taken few); 1 before kMinPasses passes.
   double call_demand(GatherKind kind, int x, int y) const;
+  // The paths the remainder asks for at a camera vertex of pixel (x, y), EARS's splitting
+  // factor: sqrt((second moment / seconds of one path) x (pixel cost / pixel variance)) from
+  // the earlier paths of the pixel's tile (the seconds of all paths while the tile has traced
+  // few); 1 before a price is learned.
+  double remainder_demand(int x, int y) const;
   int passes() const { return passes_; }
 
  private:
@@ -93,6 +109,8 @@ class EffortPrice {
   EffortStats uncontrolled_[2];  // of the first kMinPasses passes, which took every gather once
   EffortStats controlled_[2];    // of the passes after
   double price_[2] = {0, 0};
+  std::vector<RemainderStats> remainder_tiles_;
+  RemainderStats remainder_;
 };
 
 }  // namespace vrlis::integration
