@@ -51,6 +51,21 @@ std::optional<vrlis::scenes::BuiltScene> EffortScene(const char* name) {
   return built;
 }
 
+// The mean over a 16 x 16 render's pixels of f(price, settings, x, y), the price learned from
+// five passes with the control on.
+template <typename F>
+double MeanOverPixels(const char* scene, F&& f) {
+  auto built = EffortScene(scene);
+  REQUIRE(built);
+  const vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+  vrlis::integration::VrlRenderer r(built->scene, s);
+  for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
+  double sum = 0;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) sum += f(r.effort_price(), s, x, y);
+  return sum / (s.width * s.height);
+}
+
 bool Same(const vrlis::integration::Film& a, const vrlis::integration::Film& b) {
   return a.pixels.size() == b.pixels.size() &&
          std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(vrlis::integration::Spectrum)) == 0;
@@ -97,20 +112,13 @@ TEST_CASE("effort: gathers without variance fall to the floor, a scene of gather
 
 TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
-    auto built = EffortScene(scene);
-    REQUIRE(built);
-    const vrlis::integration::RenderSettings s = Settings(*built, 16, true);
-    vrlis::integration::VrlRenderer r(built->scene, s);
-    for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
-    vrlis::EffortSettings e = s.transport.effort;
-    e.price = r.effort_price().price(vrlis::integration::GatherKind::Medium);
-    double sum = 0;
-    for (int y = 0; y < s.height; ++y)
-      for (int x = 0; x < s.width; ++x) {
-        e.call_demand = r.effort_price().call_demand(vrlis::integration::GatherKind::Medium, x, y);
-        sum += vrlis::EffortCallRate(e);
-      }
-    return sum / (s.width * s.height);
+    return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
+                                    const vrlis::integration::RenderSettings& s, int x, int y) {
+      vrlis::EffortSettings e = s.transport.effort;
+      e.price = price.price(vrlis::integration::GatherKind::Medium);
+      e.call_demand = price.call_demand(vrlis::integration::GatherKind::Medium, x, y);
+      return vrlis::EffortCallRate(e);
+    });
   };
   const double room = mean_rate("room"), bidirectional = mean_rate("bidirectional");
   INFO("mean rate of a medium-to-medium call after 5 passes: room " << room << ", bidirectional " << bidirectional);
@@ -159,15 +167,10 @@ TEST_CASE("effort keeps the image's mean", "[render][effort]") {
 
 TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
-    auto built = EffortScene(scene);
-    REQUIRE(built);
-    const vrlis::integration::RenderSettings s = Settings(*built, 16, true);
-    vrlis::integration::VrlRenderer r(built->scene, s);
-    for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
-    double sum = 0;
-    for (int y = 0; y < s.height; ++y)
-      for (int x = 0; x < s.width; ++x) sum += r.effort_price().remainder_demand(x, y);
-    return sum / (s.width * s.height);
+    return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
+                                    const vrlis::integration::RenderSettings&, int x, int y) {
+      return price.remainder_demand(x, y);
+    });
   };
   const double corner = mean_rate("corner"), room = mean_rate("room");
   INFO("mean remainder demand after 5 passes: corner " << corner << ", room " << room);

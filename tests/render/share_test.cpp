@@ -35,6 +35,24 @@ class SumRenderer : public vi::Renderer {
   VrlRenderer a_, b_;
 };
 
+// The split render against the unshared one, block by block, and the two sabotages, which
+// must be rejected (seed: the unshared render's; the others share seed + 1).
+void CheckShare(const char* what, vi::Renderer& whole, vi::Renderer& split, vi::Renderer& twice, vi::Renderer& gap,
+                int size, int block, int passes, std::uint64_t seed) {
+  auto w = vrlis::test::EstimateBlocks(whole, size, size, block, passes, seed);
+  auto s = vrlis::test::EstimateBlocks(split, size, size, block, passes, seed + 1);
+  auto t = vrlis::test::EstimateBlocks(twice, size, size, block, passes, seed + 1);
+  auto g = vrlis::test::EstimateBlocks(gap, size, size, block, passes, seed + 1);
+  vrlis::test::ZSummary z = vrlis::test::Compare(s, w), zt = vrlis::test::Compare(t, w), zg = vrlis::test::Compare(g, w);
+  std::printf("[%s] split vs unshared: %s\n[%s] sabotage, no share given up: %s\n"
+              "[%s] sabotage, more given up than the gathers take: %s\n",
+              what, z.Describe().c_str(), what, zt.Describe().c_str(), what, zg.Describe().c_str());
+  CHECK(z.n == 4);
+  CHECK(z.Pass());
+  CHECK_FALSE(zt.Pass());
+  CHECK_FALSE(zg.Pass());
+}
+
 // One part of the transport alone: the VPLs' (surface to surface) or the remainder's.
 RenderSettings VplPart(const RenderSettings& base, bool vpls, float bound) {
   RenderSettings s = base;
@@ -62,18 +80,7 @@ TEST_CASE("VPLs and the remainder share surface-to-surface light without bias", 
   SumRenderer split(built->scene, VplPart(base, true, bound), VplPart(base, false, bound));
   SumRenderer twice(built->scene, VplPart(base, true, bound), VplPart(base, false, 0));  // sabotages
   SumRenderer gap(built->scene, VplPart(base, true, bound), VplPart(base, false, 2 * bound));
-  auto w = vrlis::test::EstimateBlocks(whole, base.width, base.height, block, passes, 21);
-  auto s = vrlis::test::EstimateBlocks(split, base.width, base.height, block, passes, 22);
-  auto t = vrlis::test::EstimateBlocks(twice, base.width, base.height, block, passes, 22);
-  auto g = vrlis::test::EstimateBlocks(gap, base.width, base.height, block, passes, 22);
-  vrlis::test::ZSummary z = vrlis::test::Compare(s, w), zt = vrlis::test::Compare(t, w), zg = vrlis::test::Compare(g, w);
-  std::printf("[vpl] split vs remainder alone: %s\n[vpl] sabotage, no share given up: %s\n"
-              "[vpl] sabotage, the share of twice the bound given up: %s\n",
-              z.Describe().c_str(), zt.Describe().c_str(), zg.Describe().c_str());
-  CHECK(z.n == 4);
-  CHECK(z.Pass());
-  CHECK_FALSE(zt.Pass());
-  CHECK_FALSE(zg.Pass());
+  CheckShare("vpl", whole, split, twice, gap, base.width, block, passes, 21);
 }
 
 // One part of the transport alone: the two VRL gathers' or the remainder's (no VPLs).
@@ -102,16 +109,5 @@ TEST_CASE("VRL gathers and the remainder share medium connections without bias",
   SumRenderer split(built->scene, VrlPart(base, true, bound), VrlPart(base, false, bound));
   SumRenderer twice(built->scene, VrlPart(base, true, none), VrlPart(base, false, bound));  // sabotages
   SumRenderer gap(built->scene, VrlPart(base, true, bound), VrlPart(base, false, none));
-  auto w = vrlis::test::EstimateBlocks(whole, base.width, base.height, block, passes, 31);
-  auto s = vrlis::test::EstimateBlocks(split, base.width, base.height, block, passes, 32);
-  auto t = vrlis::test::EstimateBlocks(twice, base.width, base.height, block, passes, 32);
-  auto g = vrlis::test::EstimateBlocks(gap, base.width, base.height, block, passes, 32);
-  vrlis::test::ZSummary z = vrlis::test::Compare(s, w), zt = vrlis::test::Compare(t, w), zg = vrlis::test::Compare(g, w);
-  std::printf("[vrl share] split vs gathers whole: %s\n[vrl share] sabotage, no share given up: %s\n"
-              "[vrl share] sabotage, no share taken: %s\n",
-              z.Describe().c_str(), zt.Describe().c_str(), zg.Describe().c_str());
-  CHECK(z.n == 4);
-  CHECK(z.Pass());
-  CHECK_FALSE(zt.Pass());
-  CHECK_FALSE(zg.Pass());
+  CheckShare("vrl share", whole, split, twice, gap, base.width, block, passes, 31);
 }
