@@ -2,7 +2,6 @@
 
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
-#include "vrlis_integration/vpl.hpp"
 
 namespace vrlis::integration {
 namespace {

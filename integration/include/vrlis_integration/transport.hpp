@@ -21,7 +21,7 @@ struct TransportSettings {
   // With direct: also single scattering along camera segments (off: the surface part alone;
   // the comparison's noise decomposition takes the two apart).
   bool single_scattering = true;
-  bool indirect = true;           // path-traced remainder (second vertex not a VRL point)
+  bool indirect = true;           // path-traced remainder (the connections the gathers leave it)
   // VPLs at the light paths' diffuse vertices (vpl.hpp), gathered at the diffuse point ending
   // the camera chain (surface to surface) and along camera segments (surface to medium): the
   // connections up to the geometry term `vpl_bound`, the remainder carrying the excess. With
