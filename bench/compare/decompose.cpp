@@ -237,6 +237,7 @@ void SplitSteps(const vrlis::integration::Scene& scene, const vrlis::integration
 DecomposeResult Decompose(const DecomposeConfig& config) {
   StudyScene scene = BuildStudyScene(config.scene, {}, config.width, config.height, config.vrls);
   scene.settings.transport.vertex_single_scattering = !config.segment_scattering;
+  if (config.vrl_bound) scene.settings.transport.vrl_bound = *config.vrl_bound;
   DecomposeResult out;
   out.config = config;
   out.g = scene.built.scene.medium.g;

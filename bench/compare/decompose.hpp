@@ -7,6 +7,7 @@
 // rendered, with step two (the camera sampler) replaced by quadrature, and with both steps
 // by quadrature (what is left comes from the light paths and the pixel jitter).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct DecomposeConfig {
   // Path-traced parts estimate point-light single scattering along each segment instead of
   // jointly at the vertex before it (the variant of unbounded variance next to a light).
   bool segment_scattering = false;
+  // The VRL gathers' bound on their connections (TransportSettings::vrl_bound); unset: each
+  // scene's own.
+  std::optional<float> vrl_bound;
 };
 
 struct Estimate {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -168,6 +169,9 @@ int main(int argc, char** argv) {
   app.add_flag("--with-effort", with_effort, "Every sampler also with the effort control on (NAME+effort; "
                                            "a sampler is named so in --samplers too)");
   app.add_flag("--decompose", decompose, "Where the noise lives: per part of transport, and step one versus two");
+  std::optional<float> vrl_bound;
+  app.add_option("--vrl-bound", vrl_bound, "--decompose: the VRL gathers take their connections up to this geometry "
+                                           "term, the remainder the rest (inf: none shared; default: each scene's)");
   app.add_flag("--segment-scattering", segment_scattering, "--decompose: path-traced parts estimate point-light "
                "single scattering along each segment, not jointly at the vertex before it");
   app.add_flag("--gather-weights", gather_weights, "The tails of the gather samples' weights, each scene at its "
@@ -213,6 +217,8 @@ int main(int argc, char** argv) {
   }
   if (decompose && base.vrl_only) return Fail("--decompose splits the whole transport; it does not take --vrl-only");
   if (segment_scattering && !decompose) return Fail("--segment-scattering is an option of --decompose");
+  if (vrl_bound && !decompose) return Fail("--vrl-bound is an option of --decompose");
+  if (vrl_bound && !(*vrl_bound >= 0)) return Fail("--vrl-bound must be >= 0 (inf: no bound)");
   if (gather_weights && (decompose || base.vrl_only || full))
     return Fail("--gather-weights takes neither --decompose, --vrl-only nor --full");
   if (gather_weights && app.count("--g") > 0)
@@ -291,6 +297,7 @@ int main(int argc, char** argv) {
         c.step_budget = step_seconds;
         c.seed = base.seed;
         c.segment_scattering = segment_scattering;
+        c.vrl_bound = vrl_bound;
         std::fprintf(stderr, "%s: decomposing (%.3g s parts, %.3g s steps) ...\n", scene.c_str(), c.budget,
                      c.step_budget);
         nlohmann::json j = DecompositionJson(vrlis::compare::Decompose(c));
