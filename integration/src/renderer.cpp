@@ -83,7 +83,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
     s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
     // The remainder is split where it asks for more paths, never rouletted: its paths cost too
-    // little where it asks for fewer (room: 1 ms of a 78 ms pass) to repay larger weights.
+    // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path
     const double rate = demand > 1 ? std::min(demand, std::max(1.0, effort.ceiling)) : 1.0;
     auto p0 = std::chrono::steady_clock::now();
