@@ -1,30 +1,11 @@
 #include "vrlis_integration/camera_paths.hpp"
 
-#include <chrono>
-
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
 #include "vrlis_integration/path_tracer.hpp"
 
 namespace vrlis::integration {
 namespace {
-
-// Adds the seconds of its scope to *seconds if on (the effort control's cost of a gather).
-class Timer {
- public:
-  Timer(bool on, double* seconds) : seconds_(on ? seconds : nullptr) {
-    if (seconds_) start_ = std::chrono::steady_clock::now();
-  }
-  ~Timer() {
-    if (seconds_) *seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  Timer(const Timer&) = delete;
-  Timer& operator=(const Timer&) = delete;
-
- private:
-  double* seconds_;
-  std::chrono::steady_clock::time_point start_;
-};
 
 // One call of a gather: its rate and its contribution to the pixel squared, weighted by the
 // rate (an estimate of the call's second moment had it been taken, docs/maths.md#effort-calls).
@@ -33,24 +14,6 @@ void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortS
   stats->calls += 1;
   stats->call_rate += rate;
   stats->call_m2 += rate * contribution.MeanSquare();
-}
-
-// The remainder's paths from one camera vertex: EffortSamples(rate) of them, each weighted
-// 1 / rate, so the sum keeps its mean whatever the rate; `stats`, if set, adds what the
-// price learns from. `path` returns one path's contribution.
-template <typename Path>
-Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, Path&& path) {
-  if (rate == 1 && !stats) return path();
-  Timer timer(stats != nullptr, stats ? &stats->seconds : nullptr);
-  const int n = rate == 1 ? 1 : vrlis::EffortSamples(rate, rng.Uniform());
-  Spectrum sum;
-  for (int i = 0; i < n; ++i) {
-    const Spectrum y = path();
-    if (stats) stats->m2 += y.MeanSquare() / rate;
-    sum += y;
-  }
-  if (stats) stats->launches += 1, stats->paths += n;
-  return sum * static_cast<float>(1 / rate);
 }
 
 }  // namespace
@@ -75,7 +38,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         const std::uint64_t before = stats.gathers;
         Spectrum gathered;
         {
-          Timer timer(effort.on, &stats.seconds);
+          detail::Timer timer(effort.on, &stats.seconds);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
                                                  effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
         }
@@ -115,7 +78,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       const std::uint64_t before = stats.gathers;
       Spectrum gathered;
       {
-        Timer timer(effort.on, &stats.seconds);
+        detail::Timer timer(effort.on, &stats.seconds);
         gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
                                                 effort, effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
       }

@@ -33,9 +33,8 @@ Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, cons
   Rng own = rng.Split();
   for (int k = 0; k < samples; ++k) {
     const auto [v, pick] = vpls.Sample(own.Uniform());
-    float g = GeometryTerm(start, {v->p, v->n, true});
+    const float g = std::min(GeometryTerm(start, {v->p, v->n, true}), bound);  // g x GatherShare(g, bound)
     if (!(g > 0)) continue;
-    g *= GatherShare(g, bound);
     float tr = scene.Connect(p, v->p);
     if (tr > 0) sum += v->flux * (g * tr / pick);
   }

@@ -11,6 +11,8 @@
 //   and mostly taken where they carry it all (bidirectional);
 // - roulette raises the samples' weights and the floor bounds them: in room the largest effort
 //   weight exceeds 1 and is at most 1 / floor, every weight finite; recording them changes no image;
+// - a split remainder (SplitRemainder) keeps a path's mean at rates 0.4, 1 and 2.6 and its
+//   statistics estimate the path's second moment; without its 1 / rate it is rejected;
 // - the remainder's demand follows the price: above 2 paths per camera vertex in corner, whose
 //   remainder holds most of the variance, below 1 in room (where the renderer keeps 1);
 // - the controlled image's mean is the uncontrolled one's: per 8 x 8 block of the
@@ -25,6 +27,8 @@
 
 #include <optional>
 
+#include <vrlis/core/running_moments.hpp>
+#include <vrlis_integration/camera_paths.hpp>
 #include <vrlis_integration/weight_log.hpp>
 #include <vrlis_scenes/scenes.hpp>
 
@@ -163,6 +167,31 @@ TEST_CASE("effort keeps the image's mean", "[render][effort]") {
   CHECK(z.Pass());
   CHECK(z.n == 4);
   CHECK_FALSE(zc.Pass());
+}
+
+TEST_CASE("effort: a split remainder keeps its mean and learns its second moment", "[render][effort]") {
+  // A "path" worth u, uniform in [0, 1): mean 1/2, second moment 1/3. At rates below, at and
+  // above one the split sum keeps the mean and RemainderStats' m2 per launch estimates 1/3;
+  // the sabotage (the split sum without its 1 / rate) must be rejected.
+  const double rate = GENERATE(0.4, 1.0, 2.6);
+  INFO("rate " << rate);
+  vrlis::integration::Rng rng(7, 0, 0, vrlis::integration::StreamPurpose::Camera);
+  vrlis::integration::RemainderStats stats;
+  vrlis::RunningMoments kept, sabotaged;
+  for (int k = 0; k < 40000; ++k) {
+    const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, [&] {
+      return vrlis::integration::Spectrum(rng.Uniform());
+    }).Average();
+    kept.add(y);
+    sabotaged.add(y * rate);
+  }
+  auto z = [](const vrlis::RunningMoments& m, double mean) { return (m.mean() - mean) / m.standard_error(); };
+  INFO("z " << z(kept, 0.5) << ", sabotaged z " << z(sabotaged, 0.5) << ", m2 per launch "
+            << stats.m2 / stats.launches << ", paths per launch " << stats.paths / stats.launches);
+  CHECK(std::abs(z(kept, 0.5)) < 4);
+  CHECK(std::abs(stats.m2 / stats.launches - 1.0 / 3) < 0.015);
+  CHECK(std::abs(stats.paths / stats.launches - rate) < 0.02);
+  if (rate != 1) CHECK(std::abs(z(sabotaged, 0.5)) > 4);
 }
 
 TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
