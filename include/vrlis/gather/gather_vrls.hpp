@@ -38,17 +38,19 @@ struct GatherBatch {
   int count = 0;
 };
 
-// The loop shared by both gathers: predict(i) is a bound of VRL i's unweighted mean (effort.hpp)
-// and quick(i) a looser, cheaper one, which decides alone where it already puts q at the floor
-// (the tighter bound would too); gather(model, batch, samples) samples a batch with the
-// EffortModel's samplers (always Chosen unless `policy`). A batch is run when full; with the
-// control off also after every kSize VRLs, so that the batches are those of one gather per
-// VRL (with it on, the few samples roulette leaves would each pay a whole batch).
-template <int kUniforms, typename Real, typename Uniform, typename Quick, typename Predict, typename Gather,
-          typename Connect>
+// The loop shared by both gathers: bounds(first, n, quick, tight) writes, for VRLs
+// [first, first + n) (n <= kBoundBatch), a cheap bound of each one's unweighted mean into
+// quick and a tighter one into tight, each if set (effort.hpp, in vector lanes); the quick one
+// decides alone where it already puts q at the floor (the tighter bound would too), and a
+// block's tight ones are taken once one of its VRLs needs them. gather(model, batch, samples)
+// samples a batch with the EffortModel's samplers (always Chosen unless `policy`). A batch is
+// run when full; with the control off also after every kSize VRLs, so that the batches are
+// those of one gather per VRL (with it on, the few samples roulette leaves would each pay a
+// whole batch).
+template <int kUniforms, typename Real, typename Uniform, typename Bounds, typename Gather, typename Connect>
 void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<Real>* vrls, const Real* weights,
-                   int count, bool valid, Uniform& uniform, Quick&& quick, Predict&& predict, Gather&& gather,
-                   Connect& connect, EffortTally* tally) {
+                   int count, bool valid, Uniform& uniform, Bounds&& bounds, Gather&& gather, Connect& connect,
+                   EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
   Batch batches[2];
   const double rate = EffortCallRate(effort);
@@ -62,18 +64,23 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     batch.count = 0;
     if (tally) tally->sample_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  Real quick[kBoundBatch], tight[kBoundBatch];
+  bool tight_taken = false;  // for the block of VRL i
   for (int i = 0; i < count; ++i) {
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
+    const int lane = i % kBoundBatch, first = i - lane, block = std::min(kBoundBatch, count - first);
+    if (effort.on && lane == 0) bounds(first, block, quick, nullptr), tight_taken = false;
     int n = 1;
     Real weight = 1;
     EffortModel model = EffortModel::Chosen;
     if (effort.on) {
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
-        if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(predict(i))) : 0;
+        if (!tight_taken) bounds(first, block, nullptr, tight), tight_taken = true;
+        if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(tight[lane])) : 0;
         return m2;
       };
-      double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick(i))) : 0);
+      double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick[lane])) : 0);
       if (demand > effort.floor) demand = EffortDemand(effort, predicted());
       const double q = EffortClamp(effort, demand);  // overall; q / rate within a taken call
       if (policy) model = ChooseEffortModel(effort, demand);
@@ -114,8 +121,9 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
     constexpr bool policy = std::is_same_v<StepTwo, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<2>(
         effort, policy, vrls, weights, count, valid, uniform,
-        [&](int i) { return MediumGatherQuickBound(camera, vrls[i], medium); },
-        [&](int i) { return MediumGatherBound(camera, vrls[i], medium); },
+        [&](int first, int n, Real* quick, Real* tight) {
+          MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
+        },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
           auto with = [&](auto one, auto two) {
             SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
@@ -143,8 +151,9 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
     constexpr bool policy = std::is_same_v<Sampler, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<1>(
         effort, policy, vrls, weights, count, valid, uniform,
-        [&](int i) { return SurfaceGatherQuickBound(point, normal, vrls[i], medium); },
-        [&](int i) { return SurfaceGatherBound(point, normal, vrls[i], medium); },
+        [&](int first, int n, Real* quick, Real* tight) {
+          SurfaceGatherBounds(point, normal, vrls + first, n, medium, quick, tight);
+        },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
           auto with = [&](auto sampler) {
             SampleSurfaceGathers<typename decltype(sampler)::type>(ValidQuery{}, point, normal, medium, b.segments,

@@ -53,29 +53,6 @@ struct VrlPointDensity {
   Real start = 0, x0 = 0, r0 = 1, before = 0;  // the walk: where it starts, |x| and sqrt(1 + x^2) there, the CDF there
 };
 
-// c ? a : b. kLanes: by bit masks, both computed (SelectLanes), for loops that vectorise
-// (SampleVrlPoints); else a plain choice, which lets one VRL at a time skip the other case.
-template <bool kLanes, typename Real>
-[[gnu::always_inline]] inline Real Pick(bool c, Real a, Real b) {
-  if constexpr (kLanes) {
-    return SelectLanes(c, a, b);
-  } else {
-    return c ? a : b;
-  }
-}
-
-// sqrt(x): by the vectorisable SqrtLanes in the lanes' arithmetic, else by the square-root
-// instruction (half the latency of SqrtLanes' Newton steps; VrlPoint one VRL at a time ran
-// 1.18x slower with SqrtLanes). The two round differently, within 3 ulp.
-template <bool kLanes, typename Real>
-[[gnu::always_inline]] inline Real PickSqrt(Real x) {
-  if constexpr (kLanes) {
-    return SqrtLanes(x);
-  } else {
-    return std::sqrt(x);
-  }
-}
-
 // The fit for a valid query of representable length. With kLanes branch-free (every case
 // computed, then selected), so that a loop over VRLs vectorises.
 template <bool kLanes, typename Real>
