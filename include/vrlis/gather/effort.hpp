@@ -276,7 +276,7 @@ template <bool kLanes = false, typename Real>
 [[gnu::always_inline]] inline Real SurfaceGatherBound(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<Real>& vrl,
                                                       const Medium<Real>& m) {
   const Vec3<Real> w0 = vrl.origin - point, w1 = w0 + vrl.length * vrl.dir, across = Cross(w0, vrl.dir);
-  const bool behind = !(Dot(normal, w0) > 0) & !(Dot(normal, w1) > 0);
+  const bool front0 = Dot(normal, w0) > 0, front1 = Dot(normal, w1) > 0, behind = !front0 & !front1;
   const Real h = PickSqrt<kLanes>(Dot(across, across)), v0 = -Dot(vrl.dir, w0);
   const Real hc = Pick<kLanes>(h > Real(1e-6), h, Real(1e-6));
   const Real l0 = PickSqrt<kLanes>(Dot(w0, w0)), l1 = PickSqrt<kLanes>(Dot(w1, w1));
@@ -296,7 +296,8 @@ template <bool kLanes = false, typename Real>
 [[gnu::always_inline]] inline Real SurfaceGatherQuickBound(Vec3<Real> point, Vec3<Real> normal,
                                                            const VrlSegment<Real>& vrl, const Medium<Real>& m) {
   const Vec3<Real> w0 = vrl.origin - point, across = Cross(w0, vrl.dir);
-  const bool behind = !(Dot(normal, w0) > 0) & !(Dot(normal, w0 + vrl.length * vrl.dir) > 0);
+  const bool front0 = Dot(normal, w0) > 0, front1 = Dot(normal, w0 + vrl.length * vrl.dir) > 0;
+  const bool behind = !front0 & !front1;
   const Real h = PickSqrt<kLanes>(Dot(across, across)), hc = Pick<kLanes>(h > Real(1e-6), h, Real(1e-6));
   const Real bound = m.sigma_s * detail::PhaseAt<kLanes>(std::abs(m.g), Real(1)) * kInvPi<Real> *
                      ExpLanes(-m.sigma_t * PickSqrt<kLanes>(Dot(w0, w0))) *
