@@ -10,20 +10,32 @@ namespace vrlis {
 
 // d = 1 + g^2 - 2 g cos, written in terms of 1 - cos and 1 + cos so that it does not cancel
 // near either peak when |g| -> 1 (docs/maths.md#numerics). The phase function is
-// (1 - g)(1 + g) / (4 pi d^(3/2)).
-template <typename Real>
+// (1 - g)(1 + g) / (4 pi d^(3/2)). kLanes: branch-free, d^(-3/2) by RsqrtLanes, for loops
+// over lanes that compilers vectorise (lane_math.hpp).
+template <bool kLanes = false, typename Real>
 Real HenyeyGreensteinBase(Real g, Real one_minus_cos, Real one_plus_cos) {
-  return g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;
+  if constexpr (kLanes) {
+    return SelectLanes(g >= 0, Sqr(1 - g) + 2 * g * one_minus_cos, Sqr(1 + g) - 2 * g * one_plus_cos);
+  } else {
+    return g >= 0 ? Sqr(1 - g) + 2 * g * one_minus_cos : Sqr(1 + g) - 2 * g * one_plus_cos;
+  }
 }
 
-template <typename Real>
+template <bool kLanes = false, typename Real>
 Real HenyeyGreenstein(Real g, Real one_minus_cos, Real one_plus_cos) {
-  Real denom = HenyeyGreensteinBase(g, one_minus_cos, one_plus_cos);
-  return (1 - g) * (1 + g) / (4 * kPi<Real> * denom * std::sqrt(denom));
+  Real denom = HenyeyGreensteinBase<kLanes>(g, one_minus_cos, one_plus_cos);
+  if constexpr (kLanes) {
+    Real r = RsqrtLanes(denom);
+    return (1 - g) * (1 + g) * (kInvPi<Real> / 4) * r * r * r;
+  } else {
+    return (1 - g) * (1 + g) / (4 * kPi<Real> * denom * std::sqrt(denom));
+  }
 }
 
-template <typename Real>
-Real HenyeyGreenstein(Real g, Real cos) { return HenyeyGreenstein(g, 1 - cos, 1 + cos); }
+template <bool kLanes = false, typename Real>
+Real HenyeyGreenstein(Real g, Real cos) {
+  return HenyeyGreenstein<kLanes>(g, 1 - cos, 1 + cos);
+}
 
 // The value at the lobe's peak (cos = 1 for g >= 0, cos = -1 for g < 0).
 template <typename Real>

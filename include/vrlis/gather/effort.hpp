@@ -100,13 +100,6 @@ inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
 inline int EffortSamples(double q, double u) { return static_cast<int>(std::floor(q + u)); }
 
 namespace detail {
-// HenyeyGreenstein, branch-free, with PickRsqrt for its power -3/2.
-template <bool kLanes, typename Real>
-[[gnu::always_inline]] inline Real PhaseAt(Real g, Real cos) {
-  Real d = Pick<kLanes>(g >= 0, Sqr(1 - g) + 2 * g * (1 - cos), Sqr(1 + g) - 2 * g * (1 + cos));
-  Real r = PickRsqrt<kLanes>(d);
-  return (1 - g) * (1 + g) * (kInvPi<Real> / 4) * r * r * r;
-}
 template <bool kLanes, typename Real>
 [[gnu::always_inline]] inline Real Min(Real a, Real b) {
   return Pick<kLanes>(a < b, a, b);
@@ -138,7 +131,7 @@ template <bool kLanes, typename Real>
 // monotone in the cosine, largest at hi for g > 0 and at lo for g < 0.
 template <bool kLanes, typename Real>
 [[gnu::always_inline]] inline Real PhaseMax(Real g, std::pair<Real, Real> range) {
-  return PhaseAt<kLanes>(g, Pick<kLanes>(g < 0, range.first, range.second));
+  return HenyeyGreenstein<kLanes>(g, Pick<kLanes>(g < 0, range.first, range.second));
 }
 }  // namespace detail
 
@@ -216,7 +209,7 @@ template <bool kLanes = false, typename Real>
                                                           const Medium<Real>& m) {
   const Vec3<Real> gap = vrl.origin - camera.at(camera.tmin);
   const Real r = Closest<kLanes>(camera, vrl).r;
-  const Real peak = detail::PhaseAt<kLanes>(std::abs(m.g), Real(1));  // the lobe's largest value
+  const Real peak = HenyeyGreenstein<kLanes>(std::abs(m.g), Real(1));  // the lobe's largest value
   return Sqr(m.sigma_s * peak) * ExpLanes(-m.sigma_t * PickSqrt<kLanes>(Dot(gap, gap))) * vrl.length *
          detail::Min<kLanes>((camera.tmax - camera.tmin) / (r * r), kPi<Real> / r);
 }
@@ -299,7 +292,7 @@ template <bool kLanes = false, typename Real>
   const bool front0 = Dot(normal, w0) > 0, front1 = Dot(normal, w0 + vrl.length * vrl.dir) > 0;
   const bool behind = !front0 & !front1;
   const Real h = PickSqrt<kLanes>(Dot(across, across)), hc = Pick<kLanes>(h > Real(1e-6), h, Real(1e-6));
-  const Real bound = m.sigma_s * detail::PhaseAt<kLanes>(std::abs(m.g), Real(1)) * kInvPi<Real> *
+  const Real bound = m.sigma_s * HenyeyGreenstein<kLanes>(std::abs(m.g), Real(1)) * kInvPi<Real> *
                      ExpLanes(-m.sigma_t * PickSqrt<kLanes>(Dot(w0, w0))) *
                      detail::Min<kLanes>(vrl.length / (hc * hc), kPi<Real> / hc);
   return Pick<kLanes>(behind, Real(0), bound);
