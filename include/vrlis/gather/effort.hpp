@@ -209,7 +209,7 @@ template <bool kLanes = false, typename Real>
                                                           const Medium<Real>& m) {
   const Vec3<Real> gap = vrl.origin - camera.at(camera.tmin);
   const Real r = Closest<kLanes>(camera, vrl).r;
-  const Real peak = HenyeyGreenstein<kLanes>(std::abs(m.g), Real(1));  // the lobe's largest value
+  const Real peak = HenyeyGreensteinPeak(m.g);  // the lobe's largest value
   return Sqr(m.sigma_s * peak) * ExpLanes(-m.sigma_t * PickSqrt<kLanes>(Dot(gap, gap))) * vrl.length *
          detail::Min<kLanes>((camera.tmax - camera.tmin) / (r * r), kPi<Real> / r);
 }
@@ -292,7 +292,7 @@ template <bool kLanes = false, typename Real>
   const bool front0 = Dot(normal, w0) > 0, front1 = Dot(normal, w0 + vrl.length * vrl.dir) > 0;
   const bool behind = !front0 & !front1;
   const Real h = PickSqrt<kLanes>(Dot(across, across)), hc = Pick<kLanes>(h > Real(1e-6), h, Real(1e-6));
-  const Real bound = m.sigma_s * HenyeyGreenstein<kLanes>(std::abs(m.g), Real(1)) * kInvPi<Real> *
+  const Real bound = m.sigma_s * HenyeyGreensteinPeak(m.g) * kInvPi<Real> *
                      ExpLanes(-m.sigma_t * PickSqrt<kLanes>(Dot(w0, w0))) *
                      detail::Min<kLanes>(vrl.length / (hc * hc), kPi<Real> / hc);
   return Pick<kLanes>(behind, Real(0), bound);
