@@ -14,7 +14,7 @@
 // - a split remainder (SplitRemainder) keeps a path's mean at rates 0.4, 1 and 2.6 and its
 //   statistics estimate the path's second moment; without its 1 / rate it is rejected;
 // - the remainder's demand follows the price: above 2 paths per camera vertex in corner, whose
-//   remainder holds most of the variance, below 1 in room (where the renderer keeps 1);
+//   remainder holds most of the variance, and under a quarter of that in room, whose holds almost none;
 // - the controlled image's mean is the uncontrolled one's: per 8 x 8 block of the
 //   bidirectional scene (where roulette and splitting act most), of room (where whole calls
 //   are rouletted) and of the cube (where the remainder is split), z-scores within a
@@ -203,6 +203,9 @@ TEST_CASE("effort: the remainder is split where its paths hold the noise, never 
   };
   const double corner = mean_rate("corner"), room = mean_rate("room");
   INFO("mean remainder demand after 5 passes: corner " << corner << ", room " << room);
-  CHECK(corner > 2);  // its remainder holds most of the variance at a few percent of the time
-  CHECK(room < 1);    // its remainder holds almost none: the renderer keeps one path (rate 1)
+  // Both demands scale with measured seconds, which a loaded machine skews (room's rose from
+  // 0.7-0.8 alone to 1.45 under a parallel ctest); their ratio, measured 10-19 alone and
+  // loaded, is where each scene's noise is.
+  CHECK(corner > 2);           // its remainder holds most of the variance at a few percent of the time
+  CHECK(room < corner / 4);    // its remainder holds almost none
 }
