@@ -102,6 +102,14 @@ double EffortPrice::remainder_demand(int x, int y) const {
   return std::sqrt(tile.m2 / tile.launches / cost * value_of_time_);
 }
 
+bool EffortPrice::cheapest(GatherKind kind, int, int, double u) const {
+  if (passes_ < kMinPasses) return u < kPilot;
+  const EffortStats& all = gathers_[static_cast<int>(kind)];
+  if (!(all.rule_samples > 0 && all.cheapest_samples > 0)) return false;
+  const double saved = all.rule_seconds / all.rule_samples - all.cheapest_seconds / all.cheapest_samples;
+  return value_of_time_ * all.cheapest_excess < all.rule_samples * saved && !(u < kExplore);
+}
+
 double EffortPrice::call_demand(GatherKind kind, int x, int y) const {
   const EffortStats& tile = tiles_[static_cast<int>(kind)][Tile(x, y)];
   const EffortStats& all = gathers_[static_cast<int>(kind)];

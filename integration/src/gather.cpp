@@ -78,6 +78,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       ++taken.gathers;
       double y = (throughput * x).Rms() / effort_weight;
       taken.measured += effort_weight * y * y;
+      if (s.over_equiangular > 0) taken.cheapest_excess += vrlis::Sqr(effort_weight * y) * (s.over_equiangular - 1);
       ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     gather_chunk(segments, weights, n, connect, stats ? &tally : nullptr);
@@ -91,6 +92,11 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   if (stats) {
     taken.predicted = tally.predicted;
     taken.sample_seconds = tally.sample_seconds;
+    constexpr int kRule = static_cast<int>(vrlis::EffortModel::Chosen);
+    constexpr int kCheapest = static_cast<int>(vrlis::EffortModel::Cheapest);
+    taken.rule_samples = double(tally.model_samples[kRule]), taken.rule_seconds = tally.model_seconds[kRule];
+    taken.cheapest_samples = double(tally.model_samples[kCheapest]);
+    taken.cheapest_seconds = tally.model_seconds[kCheapest];
     *stats += taken;
   }
   return sum;

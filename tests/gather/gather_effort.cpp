@@ -249,7 +249,8 @@ std::vector<std::pair<int, Real>> Samples(const Setup& s, vrlis::GatherSamplers 
 
 // `auto` under a price: gathers asking for more than `accurate` ceilings take the most
 // accurate model, sample for sample; those below, at the floor too, auto's own rule (neither
-// that nor the cheapest model); the mixture of models stays unbiased (a sabotaged 1 / q fails).
+// that nor the cheapest model) unless the call asks for the cheapest (EffortSettings::cheapest);
+// the mixture of models stays unbiased (a sabotaged 1 / q fails).
 TEST_CASE("auto with the effort control takes the model its demand pays for", "[gather][effort]") {
   Setup s = MakeSetup();
   const auto automatic = *vrlis::ParseGatherSamplers("auto");
@@ -263,6 +264,14 @@ TEST_CASE("auto with the effort control takes the model its demand pays for", "[
   CHECK(Samples(s, automatic, middle) != Samples(s, *vrlis::ParseGatherSamplers("equiangular"), middle));
   vrlis::EffortSettings accurate{true, vrlis::Sqr(50 * 20 / lo)};  // every demand above 2.3 ceilings
   CHECK(Samples(s, automatic, accurate) == Samples(s, *vrlis::ParseGatherSamplers("full-product+marginal"), accurate));
+  // A call that asks for the cheapest model takes equiangular sampling below the accurate
+  // tier, priced or not, and the accurate model above it.
+  for (vrlis::EffortSettings e : {vrlis::EffortSettings{true}, middle, accurate}) {
+    e.cheapest = true;
+    const char* expected = e.price == accurate.price ? "full-product+marginal" : "equiangular";
+    INFO("price " << e.price);
+    CHECK(Samples(s, automatic, e) == Samples(s, *vrlis::ParseGatherSamplers(expected), e));
+  }
   // Demands spread over both models: 1.0 at the geometric middle of the predictions.
   s.method = automatic;
   vrlis::EffortSettings mixed{true, 1 / (lo * hi)};
@@ -270,6 +279,45 @@ TEST_CASE("auto with the effort control takes the model its demand pays for", "[
   INFO("off " << off.mean << " +- " << off.se << ", on " << on.mean << " +- " << on.se);
   CHECK(Z(on, off) < 4);
   CHECK(Z(Estimate(s, mixed, 20000, true), off) > 4);
+}
+
+// GatherSample::over_equiangular: over auto's samples, weight^2 x over_equiangular estimates
+// equiangular sampling's second moment (the same step one), within 4 standard errors, on
+// queries where auto's rule takes a fit (a dense medium, a peaked lobe); weight^2 alone (the
+// sabotage) estimates auto's own, which is rejected. Other samplers leave it 0.
+TEST_CASE("auto's samples estimate equiangular sampling's second moment", "[gather][effort]") {
+  Setup s = MakeSetup();
+  s.medium = {Real(0.8), Real(1.5), Real(2)};  // g, sigma_s, sigma_t: long optical depths, a peaked lobe
+  auto second_moments = [&](const char* method, bool over) {
+    std::vector<vrlis::RunningMoments> m(s.vrls.size());
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<Real> u(0, 1);
+    for (int call = 0; call < 20000; ++call)
+      vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers(method), {}, s.camera, s.medium, s.vrls.data(),
+                              s.weights.data(), int(s.vrls.size()), [&] { return u(rng); },
+                              [&](int i, const vrlis::GatherSample<Real>& g, Real) {
+                                m[std::size_t(i)].add(double(g.weight) * g.weight * (over ? g.over_equiangular : 1));
+                              });
+    return m;
+  };
+  const auto equiangular = second_moments("equiangular", false), estimated = second_moments("auto", true),
+             sabotaged = second_moments("auto", false);
+  int rejected = 0;
+  for (std::size_t i = 0; i < s.vrls.size(); ++i) {
+    auto z = [&](const vrlis::RunningMoments& m) {
+      return std::abs(m.mean() - equiangular[i].mean()) / std::hypot(m.standard_error(), equiangular[i].standard_error());
+    };
+    INFO("VRL " << i << ": equiangular " << equiangular[i].mean() << ", estimated " << estimated[i].mean()
+                << ", auto's own " << sabotaged[i].mean());
+    CHECK(z(estimated[i]) < 4);
+    rejected += z(sabotaged[i]) > 4;
+  }
+  CHECK(rejected >= int(s.vrls.size()) / 2);
+  bool any = false;
+  vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers("novak"), {}, s.camera, s.medium, s.vrls.data(), s.weights.data(),
+                          int(s.vrls.size()), [] { return Real(0.5); },
+                          [&](int, const vrlis::GatherSample<Real>& g, Real) { any |= g.over_equiangular != 0; });
+  CHECK_FALSE(any);
 }
 
 // MediumGatherBounds and SurfaceGatherBounds (vector lanes) against the quick and tight bounds

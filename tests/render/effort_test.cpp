@@ -15,6 +15,8 @@
 //   statistics estimate the path's second moment; without its 1 / rate it is rejected;
 // - the remainder's demand follows the price: above 2 paths per camera vertex in corner, whose
 //   remainder holds most of the variance, and under a quarter of that in room, whose holds almost none;
+// - `auto` takes the cheapest model where the variance it adds is worth less than the time it
+//   saves: in room (gathers without variance), not in the bidirectional scene at g = 0.9;
 // - the controlled image's mean is the uncontrolled one's: per 8 x 8 block of the
 //   bidirectional scene (where roulette and splitting act most), of room (where whole calls
 //   are rouletted) and of the cube (where the remainder is split), z-scores within a
@@ -208,4 +210,21 @@ TEST_CASE("effort: the remainder is split where its paths hold the noise, never 
   // loaded, is where each scene's noise is.
   CHECK(corner > 2);           // its remainder holds most of the variance at a few percent of the time
   CHECK(room < corner / 4);    // its remainder holds almost none
+}
+
+TEST_CASE("effort: auto takes the cheapest model where the variance it adds is worth less than its time",
+          "[render][effort]") {
+  auto cheapest = [](const char* scene, float g) {
+    vrlis::scenes::MediumOverrides medium;
+    medium.g = g;
+    auto built = vrlis::scenes::BuildScene(scene, medium);
+    REQUIRE(built);
+    vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+    s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
+    vrlis::integration::VrlRenderer r(built->scene, s);
+    for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
+    return r.effort_price().cheapest(vrlis::integration::GatherKind::Medium, 0, 0, 0.5);  // 0.5: not exploring
+  };
+  CHECK(cheapest("room", 0.5f));              // its gathers hold almost none of the variance
+  CHECK_FALSE(cheapest("bidirectional", 0.9f));  // equiangular sampling there has many times a fit's
 }

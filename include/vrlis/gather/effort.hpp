@@ -5,6 +5,7 @@
 // Russian roulette below one, splitting above, unbiased for any q > 0 (and q is never 0).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -41,6 +42,11 @@ struct EffortSettings {
   // 1 / rate times as often: every gather's expected samples and weights stay those of its
   // own demand, and the calls not taken save their bounds. 1, more or NaN: every call taken.
   double call_demand = 1;
+  // With the `auto` sampler: this call's gathers below the accurate tier take the cheapest
+  // model (VrlPoint, equiangular) instead of auto's per-query rule, whose prediction and
+  // dispatch cost as much as an equiangular gather. A renderer's choice per pixel tile from
+  // earlier passes (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
+  bool cheapest = false;
 };
 
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
@@ -54,6 +60,9 @@ struct EffortSettings {
 struct EffortTally {
   double predicted = 0;
   double sample_seconds = 0;
+  // Of the samples of each EffortModel: how many, and their seconds (in sample_seconds too).
+  std::uint64_t model_samples[3] = {};
+  double model_seconds[3] = {};
 };
 
 // Whether the control has a price to decide by: on, and a positive finite price learned.
@@ -89,11 +98,12 @@ inline double EffortCallRate(const EffortSettings& e) {
 // The model a gather's demand pays for (docs/maths.md#effort-models): far above the ceiling
 // its variance outweighs its time, and the most accurate one wins; below, the per-query rule
 // of the sampler asked for, at the floor too (the cheapest model's second moment can exceed
-// the model-blind prediction many times).
-enum class EffortModel { Chosen, Accurate };
+// the model-blind prediction many times), or the cheapest model where the call asks for it
+// (EffortSettings::cheapest).
+enum class EffortModel { Chosen, Accurate, Cheapest };
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
-  if (!EffortPriced(e)) return EffortModel::Chosen;
-  return SplitDemand(e, demand) >= e.accurate * e.ceiling ? EffortModel::Accurate : EffortModel::Chosen;
+  if (EffortPriced(e) && SplitDemand(e, demand) >= e.accurate * e.ceiling) return EffortModel::Accurate;
+  return e.on && e.cheapest ? EffortModel::Cheapest : EffortModel::Chosen;
 }
 
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.

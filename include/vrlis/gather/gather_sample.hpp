@@ -31,6 +31,11 @@ struct GatherSample {
   // segment, v on the VRL, and the connection |light_point - camera_point|.
   Real path_length = 0;
   int scatterings = 0;  // 2 medium to medium; 1 medium to surface and single scattering
+  // Where `auto`'s per-query rule chose the step's model (the camera step; at a surface the
+  // VRL step): the sample's density over equiangular sampling's at the same point; else 0.
+  // E[weight^2 x over_equiangular] over these samples is equiangular sampling's second
+  // moment, which a renderer weighs against auto's own (EffortSettings::cheapest).
+  Real over_equiangular = 0;
 
   bool contributes() const { return weight > 0; }
   // The weight in one channel of the medium, its coefficients built as the query's were (its
@@ -58,12 +63,20 @@ struct IntegrandFactors {
 
 namespace detail {
 template <typename Real>
-bool Usable(SegmentSample<Real> s) {
-  return s.pdf > 0 && std::isfinite(s.pdf) && std::isfinite(s.t);
+Real FiniteOrZero(Real x) { return x > 0 && std::isfinite(x) ? x : Real(0); }
+
+// GatherSample::over_equiangular of the sample s drawn by `sampler` (a SegmentSampler):
+// equiangular sampling's density is uniform in the angle, 1 / width.
+template <typename Sampler, typename Real>
+Real OverEquiangular(const Sampler& sampler, SegmentSample<Real> s) {
+  const Real uniform = sampler.domain().dtheta_dt(s.t) / sampler.domain().width();
+  return FiniteOrZero(s.pdf / uniform);
 }
 
 template <typename Real>
-Real FiniteOrZero(Real x) { return x > 0 && std::isfinite(x) ? x : Real(0); }
+bool Usable(SegmentSample<Real> s) {
+  return s.pdf > 0 && std::isfinite(s.pdf) && std::isfinite(s.t);
+}
 
 // Fills the connection and the weights from the integrand's factors and the pdf; any
 // non-finite or non-positive outcome becomes "nothing to trace" (never a NaN in an image).

@@ -17,6 +17,7 @@
 // (EffortCallRate), and each VRL one for its number of samples.
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <type_traits>
 
 #include "effort.hpp"
@@ -43,7 +44,8 @@ struct GatherBatch {
 // quick and a tighter one into tight, each if set (effort.hpp, in vector lanes); the quick one
 // decides alone where it already puts q at the floor (the tighter bound would too), and a
 // block's tight ones are taken once one of its VRLs needs them. gather(model, batch, samples)
-// samples a batch with the EffortModel's samplers (always Chosen unless `policy`). A batch is
+// samples a batch with the EffortModel's samplers (always Chosen unless `policy`), one batch
+// per model. A batch is
 // run when full; with the control off also after every kSize VRLs, so that the batches are
 // those of one gather per VRL (with it on, the few samples roulette leaves would each pay a
 // whole batch).
@@ -52,7 +54,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
                    int count, bool valid, Uniform& uniform, Bounds&& bounds, Gather&& gather, Connect& connect,
                    EffortTally* tally) {
   using Batch = GatherBatch<Real, kUniforms>;
-  Batch batches[2];
+  Batch batches[3];  // by EffortModel
   const double rate = EffortCallRate(effort);
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
   auto run = [&](EffortModel model) {
@@ -61,8 +63,13 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     GatherSample<Real> samples[Batch::kSize];
     gather(model, batch, samples);
     for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
+    if (tally) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      tally->sample_seconds += seconds;
+      tally->model_seconds[static_cast<int>(model)] += seconds;
+      tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
+    }
     batch.count = 0;
-    if (tally) tally->sample_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   Real quick[kBoundBatch], tight[kBoundBatch];
   bool tight_taken = false;  // for the block of VRL i
@@ -101,7 +108,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     }
     if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
-  for (EffortModel m : {EffortModel::Chosen, EffortModel::Accurate})
+  for (EffortModel m : {EffortModel::Chosen, EffortModel::Accurate, EffortModel::Cheapest})
     if (batches[static_cast<int>(m)].count > 0) run(m);
 }
 
@@ -132,6 +139,8 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
           if constexpr (policy) {
             if (model == EffortModel::Accurate)
               return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Type<FullProductEntry::Sampler<Real>>{});
+            if (model == EffortModel::Cheapest)
+              return with(Type<VrlPointEntry::Sampler<Real>>{}, Type<EquiangularEntry::Sampler<Real>>{});
           }
           with(Type<VrlSampler>{}, Type<StepTwo>{});
         },
@@ -161,6 +170,7 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
           };
           if constexpr (policy) {
             if (model == EffortModel::Accurate) return with(Type<FullProductEntry::Sampler<Real>>{});
+            if (model == EffortModel::Cheapest) return with(Type<EquiangularEntry::Sampler<Real>>{});
           }
           with(Type<Sampler>{});
         },

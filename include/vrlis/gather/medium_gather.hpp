@@ -129,6 +129,9 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     for (int i = 0; i < n; ++i) t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
     for (int i = 0; i < n; ++i)
       out[first + i] = FinishWithCamera(MediumGatherQuery<Real>{camera, vrls[first + i], medium}, v[i], t[i]);
+    if constexpr (std::is_same_v<CameraSampler, Auto<Real>>)
+      for (int i = 0; i < n; ++i)
+        if (out[first + i].contributes()) out[first + i].over_equiangular = detail::OverEquiangular(*fit[i], t[i]);
   }
 }
 

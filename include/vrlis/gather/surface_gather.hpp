@@ -6,6 +6,7 @@
 // by the surface's albedo.
 #include <algorithm>
 #include <optional>
+#include <type_traits>
 
 #include "../method.hpp"
 #include "gather_sample.hpp"
@@ -82,6 +83,10 @@ template <typename Sampler, typename Real>
     for (int i = 0; i < n; ++i) v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
     for (int i = 0; i < n; ++i)
       out[first + i] = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
+    if constexpr (std::is_same_v<Sampler, Auto<Real>>)
+      for (int i = 0; i < n; ++i)
+        if (out[first + i].contributes())
+          out[first + i].over_equiangular = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
   }
 }
 

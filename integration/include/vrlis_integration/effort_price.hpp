@@ -21,17 +21,25 @@ namespace vrlis::integration {
 // splitting reduces). Of the calls (vrlis::EffortCallRate): how many, the sum of their rates
 // and of rate x (contribution to the pixel)^2, an estimate of their second moments had each
 // been taken (docs/maths.md#effort-calls). Of the seconds, those spent sampling (the rest is
-// the decisions').
+// the decisions'). Of the samples `auto` took by its rule, the sum of (effort weight x
+// contribution)^2 x (GatherSample::over_equiangular - 1): an estimate of the variance the
+// pixel would gain had they been taken with equiangular sampling; and the samples and
+// sampling seconds of the rule and of the cheapest model (docs/maths.md#effort-cheapest).
 struct EffortStats {
   std::uint64_t gathers = 0;
   double seconds = 0, sample_seconds = 0, predicted = 0, measured = 0;
   double split_within = 0, split_second = 0;
   double calls = 0, call_rate = 0, call_m2 = 0;
+  double cheapest_excess = 0;
+  double rule_samples = 0, rule_seconds = 0, cheapest_samples = 0, cheapest_seconds = 0;
   void operator+=(const EffortStats& o) {
     gathers += o.gathers, seconds += o.seconds, sample_seconds += o.sample_seconds;
     predicted += o.predicted, measured += o.measured;
     split_within += o.split_within, split_second += o.split_second;
     calls += o.calls, call_rate += o.call_rate, call_m2 += o.call_m2;
+    cheapest_excess += o.cheapest_excess;
+    rule_samples += o.rule_samples, rule_seconds += o.rule_seconds;
+    cheapest_samples += o.cheapest_samples, cheapest_seconds += o.cheapest_seconds;
   }
 };
 
@@ -84,6 +92,14 @@ class EffortPrice {
   // the earlier paths of the pixel's tile (the seconds of all paths while the tile has traced
   // few); 1 before a price is learned.
   double remainder_demand(int x, int y) const;
+  // Whether `auto`'s gathers of this kind at pixel (x, y) take the cheapest model in this
+  // pass (vrlis::EffortSettings::cheapest), u uniform in [0, 1) drawn for the pixel: where
+  // the variance equiangular sampling would add, estimated from the rule's own samples of
+  // the pixel's tile (of the kind's while the tile has few), is worth less than the seconds
+  // it saves (docs/maths.md#effort-cheapest); there the rule with probability kExplore, which
+  // keeps that estimate learning. Before any price, with probability kPilot.
+  bool cheapest(GatherKind kind, int x, int y, double u) const;
+  static constexpr double kExplore = 1.0 / 32, kPilot = 1.0 / 16;
   int passes() const { return passes_; }
 
  private:
