@@ -126,12 +126,16 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       fit[i].emplace(ValidQuery{}, CameraStepQuery(q, q.vrl.at(v[i].t)));
     }
     SegmentSample<Real> t[kVrlPointBatch];
-    for (int i = 0; i < n; ++i) t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
-    for (int i = 0; i < n; ++i)
+    Real over[kVrlPointBatch] = {};  // GatherSample::over_equiangular, of auto's samples
+    for (int i = 0; i < n; ++i) {
+      t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
+      if constexpr (std::is_same_v<CameraSampler, Auto<Real>>)
+        if (fit[i]) over[i] = detail::OverEquiangular(*fit[i], t[i]);
+    }
+    for (int i = 0; i < n; ++i) {
       out[first + i] = FinishWithCamera(MediumGatherQuery<Real>{camera, vrls[first + i], medium}, v[i], t[i]);
-    if constexpr (std::is_same_v<CameraSampler, Auto<Real>>)
-      for (int i = 0; i < n; ++i)
-        if (out[first + i].contributes()) out[first + i].over_equiangular = detail::OverEquiangular(*fit[i], t[i]);
+      out[first + i].over_equiangular = out[first + i].contributes() ? over[i] : Real(0);
+    }
   }
 }
 
