@@ -102,7 +102,7 @@ double EffortPrice::remainder_demand(int x, int y) const {
   return std::sqrt(tile.m2 / tile.launches / cost * value_of_time_);
 }
 
-bool EffortPrice::cheapest(GatherKind kind, int, int, double u) const {
+bool EffortPrice::cheapest(GatherKind kind, double u) const {
   if (passes_ < kMinPasses) return u < kPilot;
   const EffortStats& all = gathers_[static_cast<int>(kind)];
   if (!(all.rule_samples > 0 && all.cheapest_samples > 0)) return false;

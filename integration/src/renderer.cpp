@@ -65,8 +65,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   std::atomic<std::uint64_t> pixel_ns{0};
   const vrlis::EffortSettings& effort = settings_.transport.effort;
   const std::size_t pixels = effort.on ? static_cast<std::size_t>(settings_.width) * settings_.height : 0;
-  std::vector<EffortStats> medium_stats(pixels), surface_stats(pixels);
-  std::vector<RemainderStats> remainder_stats(pixels);
+  medium_stats_.assign(pixels, {}), surface_stats_.assign(pixels, {}), remainder_stats_.assign(pixels, {});
   vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
   medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
   surface_effort.price = price_.price(GatherKind::Surface);
@@ -83,8 +82,8 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
     s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
     Rng choice(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + x, StreamPurpose::EffortModel);
-    m.cheapest = price_.cheapest(GatherKind::Medium, x, y, choice.Uniform());
-    s.cheapest = price_.cheapest(GatherKind::Surface, x, y, choice.Uniform());
+    m.cheapest = price_.cheapest(GatherKind::Medium, choice.Uniform());
+    s.cheapest = price_.cheapest(GatherKind::Surface, choice.Uniform());
     // The remainder is split where it asks for more paths, never rouletted: its paths cost too
     // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path
@@ -94,12 +93,12 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
-    medium_stats[i] = count.medium_effort;
-    surface_stats[i] = count.surface_effort;
-    remainder_stats[i] = count.remainder;
+    medium_stats_[i] = count.medium_effort;
+    surface_stats_[i] = count.surface_effort;
+    remainder_stats_[i] = count.remainder;
     return L;
   });
-  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats, surface_stats, remainder_stats);
+  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats_, surface_stats_, remainder_stats_);
   if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
   return film;
 }

@@ -223,7 +223,7 @@ TEST_CASE("effort: auto takes the cheapest model where the variance it adds is w
     s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
     vrlis::integration::VrlRenderer r(built->scene, s);
     for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
-    return r.effort_price().cheapest(vrlis::integration::GatherKind::Medium, 0, 0, 0.5);  // 0.5: not exploring
+    return r.effort_price().cheapest(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
   };
   CHECK(cheapest("room", 0.5f));              // its gathers hold almost none of the variance
   CHECK_FALSE(cheapest("bidirectional", 0.9f));  // equiangular sampling there has many times a fit's

@@ -44,8 +44,8 @@ struct EffortSettings {
   double call_demand = 1;
   // With the `auto` sampler: this call's gathers below the accurate tier take the cheapest
   // model (VrlPoint, equiangular) instead of auto's per-query rule, whose prediction and
-  // dispatch cost as much as an equiangular gather. A renderer's choice per pixel tile from
-  // earlier passes (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
+  // dispatch cost as much as an equiangular gather. The renderer's choice from earlier
+  // passes (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
   bool cheapest = false;
 };
 

@@ -44,19 +44,19 @@ struct GatherBatch {
 // quick and a tighter one into tight, each if set (effort.hpp, in vector lanes); the quick one
 // decides alone where it already puts q at the floor (the tighter bound would too), and a
 // block's tight ones are taken once one of its VRLs needs them. gather(model, batch, samples)
-// samples a batch with the EffortModel's samplers (always Chosen unless `policy`), one batch
-// per model. A batch is
-// run when full; with the control off also after every kSize VRLs, so that the batches are
-// those of one gather per VRL (with it on, the few samples roulette leaves would each pay a
-// whole batch).
-template <int kUniforms, typename Real, typename Uniform, typename Bounds, typename Gather, typename Connect>
-void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<Real>* vrls, const Real* weights,
+// samples a batch with the EffortModel's samplers (always Chosen unless kPolicy), one batch
+// per model. A batch is run when full; with the control off also after every kSize VRLs, so
+// that the batches are those of one gather per VRL (with it on, the few samples roulette
+// leaves would each pay a whole batch).
+template <int kUniforms, bool kPolicy, typename Real, typename Uniform, typename Bounds, typename Gather,
+          typename Connect>
+void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights,
                    int count, bool valid, Uniform& uniform, Bounds&& bounds, Gather&& gather, Connect& connect,
                    EffortTally* tally) {
-  using Batch = GatherBatch<Real, kUniforms>;
-  Batch batches[3];  // by EffortModel
   const double rate = EffortCallRate(effort);
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
+  using Batch = GatherBatch<Real, kUniforms>;
+  Batch batches[kPolicy ? 3 : 1];  // by EffortModel (built after the call's roulette: they are zeroed)
   auto run = [&](EffortModel model) {
     const auto start = tally ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Batch& batch = batches[static_cast<int>(model)];
@@ -90,7 +90,7 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
       double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick[lane])) : 0);
       if (demand > effort.floor) demand = EffortDemand(effort, predicted());
       const double q = EffortClamp(effort, demand);  // overall; q / rate within a taken call
-      if (policy) model = ChooseEffortModel(effort, demand);
+      if constexpr (kPolicy) model = ChooseEffortModel(effort, demand);
       n = EffortSamples(q / rate, double(uniform()));
       weight = n > 0 ? Real(1 / q) : Real(0);
       if (tally && n > 0) tally->predicted += n * predicted() / q;
@@ -108,8 +108,8 @@ void GatherEachVrl(const EffortSettings& effort, bool policy, const VrlSegment<R
     }
     if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
-  for (EffortModel m : {EffortModel::Chosen, EffortModel::Accurate, EffortModel::Cheapest})
-    if (batches[static_cast<int>(m)].count > 0) run(m);
+  for (int m = 0; m < (kPolicy ? 3 : 1); ++m)
+    if (batches[m].count > 0) run(EffortModel(m));
 }
 
 }  // namespace detail
@@ -126,8 +126,8 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
     using VrlSampler = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
     constexpr bool policy = std::is_same_v<StepTwo, AutoEntry::Sampler<Real>>;
-    detail::GatherEachVrl<2>(
-        effort, policy, vrls, weights, count, valid, uniform,
+    detail::GatherEachVrl<2, policy>(
+        effort, vrls, weights, count, valid, uniform,
         [&](int first, int n, Real* quick, Real* tight) {
           MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
         },
@@ -158,8 +158,8 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
   SegmentSamplers::WithEntry(method, [&](auto entry) {
     using Sampler = typename decltype(entry)::template Sampler<Real>;
     constexpr bool policy = std::is_same_v<Sampler, AutoEntry::Sampler<Real>>;
-    detail::GatherEachVrl<1>(
-        effort, policy, vrls, weights, count, valid, uniform,
+    detail::GatherEachVrl<1, policy>(
+        effort, vrls, weights, count, valid, uniform,
         [&](int first, int n, Real* quick, Real* tight) {
           SurfaceGatherBounds(point, normal, vrls + first, n, medium, quick, tight);
         },

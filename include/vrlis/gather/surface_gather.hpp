@@ -80,13 +80,15 @@ template <typename Sampler, typename Real>
       fit[i].emplace(ValidQuery{}, VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}));
     }
     SegmentSample<Real> v[kBatch];
-    for (int i = 0; i < n; ++i) v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
-    for (int i = 0; i < n; ++i)
+    Real over[kBatch] = {};  // GatherSample::over_equiangular, of auto's samples
+    for (int i = 0; i < n; ++i) {
+      v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
+      if constexpr (std::is_same_v<Sampler, Auto<Real>>) over[i] = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
+    }
+    for (int i = 0; i < n; ++i) {
       out[first + i] = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
-    if constexpr (std::is_same_v<Sampler, Auto<Real>>)
-      for (int i = 0; i < n; ++i)
-        if (out[first + i].contributes())
-          out[first + i].over_equiangular = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
+      out[first + i].over_equiangular = out[first + i].contributes() ? over[i] : Real(0);
+    }
   }
 }
 

@@ -92,13 +92,13 @@ class EffortPrice {
   // the earlier paths of the pixel's tile (the seconds of all paths while the tile has traced
   // few); 1 before a price is learned.
   double remainder_demand(int x, int y) const;
-  // Whether `auto`'s gathers of this kind at pixel (x, y) take the cheapest model in this
-  // pass (vrlis::EffortSettings::cheapest), u uniform in [0, 1) drawn for the pixel: where
-  // the variance equiangular sampling would add, estimated from the rule's own samples of
-  // the pixel's tile (of the kind's while the tile has few), is worth less than the seconds
-  // it saves (docs/maths.md#effort-cheapest); there the rule with probability kExplore, which
-  // keeps that estimate learning. Before any price, with probability kPilot.
-  bool cheapest(GatherKind kind, int x, int y, double u) const;
+  // Whether `auto`'s gathers of this kind at a pixel take the cheapest model in this pass
+  // (vrlis::EffortSettings::cheapest), u uniform in [0, 1) drawn for the pixel: where the
+  // variance equiangular sampling would add, estimated over the image from the rule's own
+  // samples, is worth less than the seconds it saves (docs/maths.md#effort-cheapest); there
+  // the rule with probability kExplore, which keeps that estimate learning. Before any
+  // price, with probability kPilot.
+  bool cheapest(GatherKind kind, double u) const;
   static constexpr double kExplore = 1.0 / 32, kPilot = 1.0 / 16;
   int passes() const { return passes_; }
 
