@@ -16,8 +16,15 @@ EffortPrice::EffortPrice(int width, int height)
   remainder_tiles_.resize(tiles);
 }
 
-void EffortPrice::Add(const Film& pass, double pixel_seconds, const std::vector<EffortStats>& medium,
-                      const std::vector<EffortStats>& surface, const std::vector<RemainderStats>& remainder) {
+EffortPrice::PixelStats& EffortPrice::BeginPass() {
+  pass_.medium.assign(pixels_, {}), pass_.surface.assign(pixels_, {}), pass_.remainder.assign(pixels_, {});
+  return pass_;
+}
+
+void EffortPrice::Add(const Film& pass, double pixel_seconds) {
+  const std::vector<EffortStats>& medium = pass_.medium;
+  const std::vector<EffortStats>& surface = pass_.surface;
+  const std::vector<RemainderStats>& remainder = pass_.remainder;
   for (std::size_t i = 0; i < pixels_; ++i) {
     remainder_ += remainder[i];
     remainder_tiles_[Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += remainder[i];

@@ -64,8 +64,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   // What the price learns from this pass, with the effort control on only.
   std::atomic<std::uint64_t> pixel_ns{0};
   const vrlis::EffortSettings& effort = settings_.transport.effort;
-  const std::size_t pixels = effort.on ? static_cast<std::size_t>(settings_.width) * settings_.height : 0;
-  medium_stats_.assign(pixels, {}), surface_stats_.assign(pixels, {}), remainder_stats_.assign(pixels, {});
+  EffortPrice::PixelStats* learned = effort.on ? &price_.BeginPass() : nullptr;
   vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
   medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
   surface_effort.price = price_.price(GatherKind::Surface);
@@ -93,12 +92,12 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
-    medium_stats_[i] = count.medium_effort;
-    surface_stats_[i] = count.surface_effort;
-    remainder_stats_[i] = count.remainder;
+    learned->medium[i] = count.medium_effort;
+    learned->surface[i] = count.surface_effort;
+    learned->remainder[i] = count.remainder;
     return L;
   });
-  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()), medium_stats_, surface_stats_, remainder_stats_);
+  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()));
   if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
   return film;
 }

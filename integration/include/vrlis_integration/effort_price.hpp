@@ -68,10 +68,18 @@ class EffortPrice {
   EffortPrice() = default;
   EffortPrice(int width, int height);
 
-  // One finished pass: its image, the seconds its pixels took (summed over threads) and
-  // what each pixel's medium-to-medium and medium-to-surface gathers and its remainder tell.
-  void Add(const Film& pass, double pixel_seconds, const std::vector<EffortStats>& medium,
-           const std::vector<EffortStats>& surface, const std::vector<RemainderStats>& remainder);
+  // What each pixel's medium-to-medium and medium-to-surface gathers and its remainder tell
+  // in the current pass, filled by the renderer. Kept with the price: allocated and zeroed
+  // afresh, their pages were faulted in every pass (a fifth of a controlled cube pass).
+  struct PixelStats {
+    std::vector<EffortStats> medium, surface;
+    std::vector<RemainderStats> remainder;
+  };
+  // The current pass's PixelStats, zeroed, one per pixel.
+  PixelStats& BeginPass();
+  // One finished pass: its image, the seconds its pixels took (summed over threads) and the
+  // PixelStats of BeginPass.
+  void Add(const Film& pass, double pixel_seconds);
   // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
   // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
   // gather taken once).
@@ -127,6 +135,7 @@ class EffortPrice {
   double price_[2] = {0, 0};
   std::vector<RemainderStats> remainder_tiles_;
   RemainderStats remainder_;
+  PixelStats pass_;
 };
 
 }  // namespace vrlis::integration

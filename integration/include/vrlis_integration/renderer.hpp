@@ -5,7 +5,6 @@
 // result does not depend on the thread count.
 #include <atomic>
 #include <cstdint>
-#include <vector>
 
 #include "effort_price.hpp"
 #include "film.hpp"
@@ -60,10 +59,6 @@ class VrlRenderer : public Renderer {
 
  private:
   EffortPrice price_;
-  // What each pixel of a pass tells the price, kept between passes: allocated and zeroed
-  // afresh, their pages were faulted in every pass (a fifth of a controlled pass in the cube).
-  std::vector<EffortStats> medium_stats_, surface_stats_;
-  std::vector<RemainderStats> remainder_stats_;
 };
 
 // The reference: a volumetric path tracer with next-event estimation.
