@@ -1,6 +1,7 @@
 // The effort control in the renderer (vrlis/gather/effort.hpp, effort_price.hpp):
-// - a pass's decisions are a function of the price learned from the passes before it: pass 3
-//   rendered by a fresh renderer given that price equals the original's pass 3 bit for bit,
+// - a pass's decisions are a function of the price learned from the passes before it (with
+//   the scene's sampler and with auto): pass 3 rendered by a fresh renderer given that price
+//   equals the original's pass 3 bit for bit,
 //   at one thread and at four (a price updated within the pass, from the pass's own pixels,
 //   would depend on their order), and differs without it (the control acted);
 // - decisions follow the price: in room, where direct lighting holds almost all the variance
@@ -80,9 +81,13 @@ bool Same(const vrlis::integration::Film& a, const vrlis::integration::Film& b) 
 }  // namespace
 
 TEST_CASE("a pass's effort decisions come from the passes before it", "[render][effort]") {
+  // The scene's own sampler, and `auto`, whose model choice is learned too (EffortPrice::cheapest).
+  const bool automatic = GENERATE(false, true);
+  INFO("auto " << automatic);
   auto built = vrlis::scenes::BuildScene("room", {});
   REQUIRE(built);
-  const vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+  vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+  if (automatic) s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
   vrlis::integration::VrlRenderer a(built->scene, s);
   for (std::uint64_t pass = 0; pass < 3; ++pass) a.RenderPass(1, pass, nullptr);
   const vrlis::integration::EffortPrice learned = a.effort_price();

@@ -49,6 +49,10 @@ struct EffortSettings {
   bool cheapest = false;
 };
 
+// The model a gather is taken with (ChooseEffortModel).
+enum class EffortModel { Chosen, Accurate, Cheapest };
+inline constexpr int kEffortModels = 3;
+
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
 // moments (w x bound)^2, summed over the samples taken with their effort weights 1 / q (an
 // unbiased estimate of their sum over the gathers considered, as the renderer's own sum
@@ -61,8 +65,8 @@ struct EffortTally {
   double predicted = 0;
   double sample_seconds = 0;
   // Of the samples of each EffortModel: how many, and their seconds (in sample_seconds too).
-  std::uint64_t model_samples[3] = {};
-  double model_seconds[3] = {};
+  std::uint64_t model_samples[kEffortModels] = {};
+  double model_seconds[kEffortModels] = {};
 };
 
 // Whether the control has a price to decide by: on, and a positive finite price learned.
@@ -100,7 +104,6 @@ inline double EffortCallRate(const EffortSettings& e) {
 // of the sampler asked for, at the floor too (the cheapest model's second moment can exceed
 // the model-blind prediction many times), or the cheapest model where the call asks for it
 // (EffortSettings::cheapest).
-enum class EffortModel { Chosen, Accurate, Cheapest };
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
   if (EffortPriced(e) && SplitDemand(e, demand) >= e.accurate * e.ceiling) return EffortModel::Accurate;
   return e.on && e.cheapest ? EffortModel::Cheapest : EffortModel::Chosen;

@@ -56,7 +56,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   const double rate = EffortCallRate(effort);
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
   using Batch = GatherBatch<Real, kUniforms>;
-  Batch batches[kPolicy ? 3 : 1];  // by EffortModel (built after the call's roulette: they are zeroed)
+  Batch batches[kPolicy ? kEffortModels : 1];  // by EffortModel (built after the call's roulette: they are zeroed)
   auto run = [&](EffortModel model) {
     const auto start = tally ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Batch& batch = batches[static_cast<int>(model)];
@@ -108,7 +108,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     }
     if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
-  for (int m = 0; m < (kPolicy ? 3 : 1); ++m)
+  for (int m = 0; m < (kPolicy ? kEffortModels : 1); ++m)
     if (batches[m].count > 0) run(EffortModel(m));
 }
 

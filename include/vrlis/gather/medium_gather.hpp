@@ -129,7 +129,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     Real over[kVrlPointBatch] = {};  // GatherSample::over_equiangular, of auto's samples
     for (int i = 0; i < n; ++i) {
       t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
-      if constexpr (std::is_same_v<CameraSampler, Auto<Real>>)
+      if constexpr (std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>)
         if (fit[i]) over[i] = detail::OverEquiangular(*fit[i], t[i]);
     }
     for (int i = 0; i < n; ++i) {

@@ -83,7 +83,7 @@ template <typename Sampler, typename Real>
     Real over[kBatch] = {};  // GatherSample::over_equiangular, of auto's samples
     for (int i = 0; i < n; ++i) {
       v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
-      if constexpr (std::is_same_v<Sampler, Auto<Real>>) over[i] = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
+      if constexpr (std::is_same_v<Sampler, AutoEntry::Sampler<Real>>) over[i] = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
     }
     for (int i = 0; i < n; ++i) {
       out[first + i] = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
