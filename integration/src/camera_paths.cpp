@@ -7,11 +7,14 @@
 namespace vrlis::integration {
 namespace {
 
-// One call of a gather: its rate and its contribution to the pixel squared, weighted by the
-// rate (an estimate of the call's second moment had it been taken, docs/maths.md#effort-calls).
-void AddCall(const vrlis::EffortSettings& effort, Spectrum contribution, EffortStats* stats) {
+// One call of a gather over `vrls` VRLs: its rate and its contribution to the pixel squared,
+// weighted by the rate (an estimate of the call's second moment had it been taken,
+// docs/maths.md#effort-calls), and whether it decided its gathers.
+void AddCall(const vrlis::EffortSettings& effort, std::size_t vrls, Spectrum contribution, EffortStats* stats) {
   const double rate = vrlis::EffortCallRate(effort);
   stats->calls += 1;
+  stats->decided += effort.decide ? 1 : 0;
+  stats->vrls += double(vrls);
   stats->call_rate += rate;
   stats->call_m2 += rate * contribution.MeanSquare();
 }
@@ -42,7 +45,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
                                                  effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
         }
-        if (effort.on) AddCall(effort, gathered, &stats);
+        if (effort.on) AddCall(effort, vrls.size(), gathered, &stats);
         L += gathered;
         count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
@@ -82,7 +85,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
                                                 effort, effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
       }
-      if (effort.on) AddCall(effort, gathered, &stats);
+      if (effort.on) AddCall(effort, vrls.size(), gathered, &stats);
       L += gathered;
       count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
     }

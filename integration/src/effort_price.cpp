@@ -29,6 +29,7 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
     remainder_ += remainder[i];
     remainder_tiles_[Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += remainder[i];
   }
+  Passes& into = passes_of_[passes_ >= kMinPasses];
   const std::vector<EffortStats>* stats[2] = {&medium, &surface};
   EffortStats total[2];
   for (int kind = 0; kind < 2; ++kind)
@@ -36,8 +37,12 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
       const EffortStats& p = (*stats[kind])[i];
       total[kind] += p;
       tiles_[kind][Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += p;
+      if (!(p.calls > 0)) continue;
+      ++into.called[kind];
+      if (!(price_[kind] > 0)) continue;  // the first pass takes every gather once
+      if (p.decided > 0) ++into.decided[kind], ++decided_pixels_[kind];
+      (p.decided > 0 ? decided_ : undecided_)[kind] += p;
     }
-  Passes& into = passes_of_[passes_ >= kMinPasses];
   for (std::size_t i = 0; i < pixels_; ++i) {
     const double v = std::sqrt(pass.pixels[i].MeanSquare());
     if (!std::isfinite(v)) continue;
@@ -83,6 +88,11 @@ void EffortPrice::Refresh() {
   variance /= double(kept);
   const double pixel_cost = p.pixel_seconds / (n * double(pixels_));
   value_of_time_ = variance > 0 ? pixel_cost / variance : 0;
+  variance_ = variance, pixel_cost_ = pixel_cost;
+  for (int kind = 0; kind < 2; ++kind) {
+    called_share_[kind] = p.called[kind] / (n * double(pixels_));
+    decided_share_[kind] = p.called[kind] > 0 ? p.decided[kind] / p.called[kind] : 0;
+  }
   for (int kind = 0; kind < 2; ++kind) {
     const EffortStats& g = gathers_[kind];
     const EffortStats& u = uncontrolled_[kind];
@@ -115,6 +125,32 @@ bool EffortPrice::cheapest(GatherKind kind, double u) const {
   if (!(all.rule_samples > 0 && all.cheapest_samples > 0)) return false;
   const double saved = all.rule_seconds / all.rule_samples - all.cheapest_seconds / all.cheapest_samples;
   return value_of_time_ * all.cheapest_excess < all.rule_samples * saved && !(u < kExplore);
+}
+
+bool EffortPrice::decide(GatherKind kind, double u) const {
+  const int k = static_cast<int>(kind);
+  const EffortStats& d = decided_[k];
+  const EffortStats& once = undecided_[k];
+  if (!(decided_pixels_[k] > 0 && variance_ > 0 && pixel_cost_ > 0)) return true;
+  // Per pixel that decided, the variance its decisions added (negative: removed) and their
+  // seconds against the same VRLs each taken once: the time outside sampling less the
+  // undecided calls' per VRL (0 before any: it then overstates the decisions' cost until the
+  // first undecided pass), and the samples' over one per VRL at the seconds of a sample (of
+  // the first pass's while none was decided); over the image, times the share of pixels
+  // that gather.
+  const EffortStats& timed = d.gathers > 0 ? d : uncontrolled_[k];
+  const double sample_cost = timed.gathers > 0 ? timed.sample_seconds / double(timed.gathers) : 0;
+  const double loop = once.vrls > 0 ? (once.seconds - once.sample_seconds) / once.vrls : 0;
+  const double seconds = (d.seconds - d.sample_seconds) - d.vrls * loop + (double(d.gathers) - d.vrls) * sample_cost;
+  const double scale = called_share_[k] / decided_pixels_[k];
+  const double dv = scale * (d.roulette_excess + within(kind) * d.split_excess), dt = scale * seconds;
+  // The measured variance and cost are of a mixture, the decided share of the pixels with
+  // the decisions' change, the rest without: the two states' products compared whole, not
+  // to first order (turning the decisions off is no small change).
+  const double v_once = variance_ - decided_share_[k] * dv, t_once = pixel_cost_ - decided_share_[k] * dt;
+  if (!(v_once > 0)) return true;    // the decisions' saving overestimated: keep them
+  if (!(t_once > 0)) return u < kExplore;  // their cost overestimated
+  return (v_once + dv) * (t_once + dt) < v_once * t_once || u < kExplore;
 }
 
 double EffortPrice::call_demand(GatherKind kind, int x, int y) const {

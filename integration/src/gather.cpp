@@ -51,12 +51,13 @@ namespace {
 
 // The library's one-call gathers over VRLs [first, last), kChunk at a time (a multiple of
 // the library's batch, so that images do not depend on it): segments and predicted weights
-// on the stack, the scene's visibility as the callback.
+// on the stack, the scene's visibility as the callback. `decided`: whether the effort control
+// decides each gather (what its statistics then measure).
 constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
 template <typename GatherShareOf, typename GatherChunk>
-Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput, EffortStats* stats,
-                       WeightLog* weight_log, GatherShareOf&& share, GatherChunk&& gather_chunk) {
+Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput, bool decided,
+                       EffortStats* stats, WeightLog* weight_log, GatherShareOf&& share, GatherChunk&& gather_chunk) {
   Spectrum sum;
   vrlis::EffortTally tally;
   EffortStats taken;
@@ -77,7 +78,10 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (!stats) return;
       ++taken.gathers;
       double y = (throughput * x).Rms() / effort_weight;
-      taken.measured += effort_weight * y * y;
+      if (decided) {
+        taken.measured += effort_weight * y * y;
+        (effort_weight > 1 ? taken.roulette_excess : taken.split_excess) += effort_weight * y * y * (effort_weight - 1);
+      }
       if (s.over_equiangular > 0) taken.cheapest_excess += vrlis::Sqr(effort_weight * y) * (s.over_equiangular - 1);
       ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
@@ -120,7 +124,7 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
   auto share = [&](const vrlis::GatherSample<float>& s) {
     return GatherShareOf({s.camera_point, {}, false}, s, bound);
   };
-  return SumOverChunks(scene, first, last, throughput, stats, weight_log, share,
+  return SumOverChunks(scene, first, last, throughput, effort.on && effort.decide, stats, weight_log, share,
                        [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
                            vrlis::EffortTally* tally) {
                          vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
@@ -151,8 +155,8 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
   Rng own = rng.Split();
   const ConnectionEnd from{p, nf, true};
   auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, bound); };
-  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, stats, weight_log,
-                                share,
+  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo,
+                                effort.on && effort.decide, stats, weight_log, share,
                                 [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
                                     auto& connect, vrlis::EffortTally* tally) {
                                   vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,

@@ -83,6 +83,8 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     Rng choice(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + x, StreamPurpose::EffortModel);
     m.cheapest = price_.cheapest(GatherKind::Medium, choice.Uniform());
     s.cheapest = price_.cheapest(GatherKind::Surface, choice.Uniform());
+    m.decide = price_.decide(GatherKind::Medium, choice.Uniform());
+    s.decide = price_.decide(GatherKind::Surface, choice.Uniform());
     // The remainder is split where it asks for more paths, never rouletted: its paths cost too
     // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path

@@ -247,6 +247,33 @@ std::vector<std::pair<int, Real>> Samples(const Setup& s, vrlis::GatherSamplers 
 }
 }  // namespace
 
+// A call that does not decide (EffortSettings::decide false) takes every gather once with
+// weight 1, sample for sample as without the control, at any price; with `auto` and the
+// cheapest model asked for, equiangular's samples. The same prices change the samples of a
+// call that decides (so the flag is what keeps them).
+TEST_CASE("a call that does not decide takes every gather once, as without the control", "[gather][effort]") {
+  Setup s = MakeSetup();
+  auto [lo, hi] = BoundRange(s);
+  const auto automatic = *vrlis::ParseGatherSamplers("auto");
+  const auto equiangular = *vrlis::ParseGatherSamplers("equiangular");
+  // Every demand at the floor, spread around one, above the accurate tier.
+  for (double price : {vrlis::Sqr(0.04 / hi), 1 / (lo * hi), vrlis::Sqr(50 * 20 / lo)}) {
+    INFO("price " << price);
+    vrlis::EffortSettings undecided{true, price};
+    undecided.decide = false;
+    for (const char* name : {"novak", "auto"}) {
+      INFO(name);
+      const auto method = *vrlis::ParseGatherSamplers(name);
+      const auto off = Samples(s, method, {});
+      REQUIRE(!off.empty());
+      CHECK(Samples(s, method, undecided) == off);
+      CHECK(Samples(s, method, vrlis::EffortSettings{true, price}) != off);
+    }
+    undecided.cheapest = true;
+    CHECK(Samples(s, automatic, undecided) == Samples(s, equiangular, {}));
+  }
+}
+
 // `auto` under a price: gathers asking for more than `accurate` ceilings take the most
 // accurate model, sample for sample; those below, at the floor too, auto's own rule (neither
 // that nor the cheapest model) unless the call asks for the cheapest (EffortSettings::cheapest);

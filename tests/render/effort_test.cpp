@@ -18,6 +18,9 @@
 //   remainder holds most of the variance, and under a quarter of that in room, whose holds almost none;
 // - `auto` takes the cheapest model where the variance it adds is worth less than the time it
 //   saves: in room (gathers without variance), not in the bidirectional scene at g = 0.9;
+// - the gathers are decided one by one where that pays and taken once where it does not: in
+//   room (decisions skip almost every gather), not in the bidirectional scene at g = 0 with
+//   equiangular sampling (bounds that cost more than the gathers, for little variance);
 // - the controlled image's mean is the uncontrolled one's: per 8 x 8 block of the
 //   bidirectional scene (where roulette and splitting act most), of room (where whole calls
 //   are rouletted) and of the cube (where the remainder is split), z-scores within a
@@ -232,4 +235,20 @@ TEST_CASE("effort: auto takes the cheapest model where the variance it adds is w
   };
   CHECK(cheapest("room", 0.5f));              // its gathers hold almost none of the variance
   CHECK_FALSE(cheapest("bidirectional", 0.9f));  // equiangular sampling there has many times a fit's
+}
+
+TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort]") {
+  auto decide = [](const char* scene, float g, const char* sampler) {
+    vrlis::scenes::MediumOverrides medium;
+    medium.g = g;
+    auto built = vrlis::scenes::BuildScene(scene, medium);
+    REQUIRE(built);
+    vrlis::integration::RenderSettings s = Settings(*built, 24, true);
+    s.transport.sampling = *vrlis::ParseGatherSamplers(sampler);
+    vrlis::integration::VrlRenderer r(built->scene, s);
+    for (std::uint64_t pass = 0; pass < 6; ++pass) r.RenderPass(1, pass, nullptr);
+    return r.effort_price().decide(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+  };
+  CHECK(decide("room", 0.5f, "equiangular"));
+  CHECK_FALSE(decide("bidirectional", 0.f, "equiangular"));
 }

@@ -47,6 +47,11 @@ struct EffortSettings {
   // dispatch cost as much as an equiangular gather. The renderer's choice from earlier
   // passes (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
   bool cheapest = false;
+  // Whether the call's gathers are decided one by one (bounds, roulette, splitting, the
+  // accurate tier). False: each taken once with weight 1 and no bound computed, the model by
+  // `cheapest` alone; the renderer's choice from earlier passes where the decisions cost more
+  // time than the variance they save is worth (docs/maths.md#effort-decide).
+  bool decide = true;
 };
 
 // The model a gather is taken with (ChooseEffortModel).
@@ -69,8 +74,10 @@ struct EffortTally {
   double model_seconds[kEffortModels] = {};
 };
 
-// Whether the control has a price to decide by: on, and a positive finite price learned.
-inline bool EffortPriced(const EffortSettings& e) { return e.on && e.price > 0 && std::isfinite(e.price); }
+// Whether the control has a price to decide by: on, deciding, and a positive finite price learned.
+inline bool EffortPriced(const EffortSettings& e) {
+  return e.on && e.decide && e.price > 0 && std::isfinite(e.price);
+}
 
 // How many samples a gather whose second moment is predicted as m2 asks for, before the
 // clamps: sqrt(price x m2) (the first-order optimum, docs/maths.md#effort); 1 unpriced.

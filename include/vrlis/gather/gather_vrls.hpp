@@ -11,10 +11,11 @@
 //
 // weights[i] >= 0 scales VRL i's predicted contribution (its power times the camera path's
 // throughput, in the units of the price); unused with the effort control off. uniform()
-// returns a number in [0, 1). With the control off every VRL draws exactly its gather's
-// numbers (two, or one at a surface), in order, valid or not, so images do not depend on
-// batching or validity; with it on the call may first draw one for whether it is taken
-// (EffortCallRate), and each VRL one for its number of samples.
+// returns a number in [0, 1). With the control off, or the call's gathers undecided
+// (EffortSettings::decide), every VRL draws exactly its gather's numbers (two, or one at a
+// surface), in order, valid or not, so images do not depend on batching or validity; decided,
+// the call may first draw one for whether it is taken (EffortCallRate), and each VRL one for
+// its number of samples.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -45,9 +46,9 @@ struct GatherBatch {
 // decides alone where it already puts q at the floor (the tighter bound would too), and a
 // block's tight ones are taken once one of its VRLs needs them. gather(model, batch, samples)
 // samples a batch with the EffortModel's samplers (always Chosen unless kPolicy), one batch
-// per model. A batch is run when full; with the control off also after every kSize VRLs, so
-// that the batches are those of one gather per VRL (with it on, the few samples roulette
-// leaves would each pay a whole batch).
+// per model. A batch is run when full; with the gathers undecided (the control off, or
+// EffortSettings::decide false) also after every kSize VRLs, so that the batches are those of
+// one gather per VRL (decided, the few samples roulette leaves would each pay a whole batch).
 template <int kUniforms, bool kPolicy, typename Real, typename Uniform, typename Bounds, typename Gather,
           typename Connect>
 void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights,
@@ -73,14 +74,16 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   };
   Real quick[kBoundBatch], tight[kBoundBatch];
   bool tight_taken = false;  // for the block of VRL i
+  const bool decide = effort.on && effort.decide;
+  EffortModel model = EffortModel::Chosen;  // the call's, unless decided per gather
+  if constexpr (kPolicy) model = ChooseEffortModel(effort, 1);
   for (int i = 0; i < count; ++i) {
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
     const int lane = i % kBoundBatch, first = i - lane, block = std::min(kBoundBatch, count - first);
-    if (effort.on && lane == 0) bounds(first, block, quick, nullptr), tight_taken = false;
+    if (decide && lane == 0) bounds(first, block, quick, nullptr), tight_taken = false;
     int n = 1;
     Real weight = 1;
-    EffortModel model = EffortModel::Chosen;
-    if (effort.on) {
+    if (decide) {
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
         if (!tight_taken) bounds(first, block, nullptr, tight), tight_taken = true;
@@ -106,7 +109,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
       batch.source[batch.count] = i;
       batch.effort_weight[batch.count++] = weight;
     }
-    if (!effort.on && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
+    if (!decide && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
   for (int m = 0; m < (kPolicy ? kEffortModels : 1); ++m)
     if (batches[m].count > 0) run(EffortModel(m));
@@ -116,7 +119,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
-// tally, if set, adds the predictions (effort on only) and the seconds of sampling.
+// tally, if set, adds the predictions (decided gathers only) and the seconds of sampling.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
                       const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,

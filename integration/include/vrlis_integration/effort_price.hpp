@@ -24,12 +24,19 @@ namespace vrlis::integration {
 // the decisions'). Of the samples `auto` took by its rule, the sum of (effort weight x
 // contribution)^2 x (GatherSample::over_equiangular - 1): an estimate of the variance the
 // pixel would gain had they been taken with equiangular sampling; and the samples and
-// sampling seconds of the rule and of the cheapest model (docs/maths.md#effort-cheapest).
+// sampling seconds of the rule and of the cheapest model (docs/maths.md#effort-cheapest). Of
+// the calls: how many decided their gathers (vrlis::EffortSettings::decide) and the VRLs all of
+// them considered, taken or not. Of the decided gathers' samples (effort weight w, contribution
+// y), the sums of w y^2 (w - 1) over the rouletted (w > 1) and the split (w < 1): estimates of
+// the variance the decisions add and remove against every gather taken once
+// (docs/maths.md#effort-decide). `measured` counts the decided calls' samples only, as
+// `predicted` does.
 struct EffortStats {
   std::uint64_t gathers = 0;
   double seconds = 0, sample_seconds = 0, predicted = 0, measured = 0;
   double split_within = 0, split_second = 0;
   double calls = 0, call_rate = 0, call_m2 = 0;
+  double decided = 0, vrls = 0, roulette_excess = 0, split_excess = 0;
   double cheapest_excess = 0;
   double rule_samples = 0, rule_seconds = 0, cheapest_samples = 0, cheapest_seconds = 0;
   void operator+=(const EffortStats& o) {
@@ -37,6 +44,7 @@ struct EffortStats {
     predicted += o.predicted, measured += o.measured;
     split_within += o.split_within, split_second += o.split_second;
     calls += o.calls, call_rate += o.call_rate, call_m2 += o.call_m2;
+    decided += o.decided, vrls += o.vrls, roulette_excess += o.roulette_excess, split_excess += o.split_excess;
     cheapest_excess += o.cheapest_excess;
     rule_samples += o.rule_samples, rule_seconds += o.rule_seconds;
     cheapest_samples += o.cheapest_samples, cheapest_seconds += o.cheapest_seconds;
@@ -108,6 +116,12 @@ class EffortPrice {
   // price, with probability kPilot.
   bool cheapest(GatherKind kind, double u) const;
   static constexpr double kExplore = 1.0 / 32, kPilot = 1.0 / 16;
+  // Whether a pixel's gathers of this kind are decided one by one in this pass
+  // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
+  // image's earlier decided calls, the decisions' seconds exceed what the variance they save
+  // is worth (docs/maths.md#effort-decide), with probability kExplore; elsewhere, and before
+  // any decided call, always.
+  bool decide(GatherKind kind, double u) const;
   int passes() const { return passes_; }
 
  private:
@@ -117,21 +131,27 @@ class EffortPrice {
   }
 
   // Of the first kMinPasses passes, or of those after: per pixel, the sums of one pass's
-  // RMS RGB value and of its square, and the pixels' seconds.
+  // RMS RGB value and of its square, and the pixels' seconds; per kind, the pixels that
+  // called its gathers and those of them that decided the gathers under a price.
   struct Passes {
     std::vector<double> sum, sum_sq;
     double pixel_seconds = 0;
     int count = 0;
+    double called[2] = {0, 0}, decided[2] = {0, 0};
   };
   int width_ = 0, height_ = 0, passes_ = 0;
   std::size_t pixels_ = 0;
   Passes passes_of_[2];
   double value_of_time_ = 0;  // pixel cost / pixel variance
+  double variance_ = 0, pixel_cost_ = 0;
+  double called_share_[2] = {0, 0}, decided_share_[2] = {0, 0};  // of the pixels, of those called
+  double decided_pixels_[2] = {0, 0};  // the pixels in decided_
   int tiles_x_ = 0;
   EffortStats gathers_[2];
   std::vector<EffortStats> tiles_[2];
   EffortStats uncontrolled_[2];  // of the first kMinPasses passes, which took every gather once
   EffortStats controlled_[2];    // of the passes after
+  EffortStats decided_[2], undecided_[2];  // of those passes' pixels that decided their gathers, and the rest
   double price_[2] = {0, 0};
   std::vector<RemainderStats> remainder_tiles_;
   RemainderStats remainder_;
