@@ -17,7 +17,7 @@ EffortPrice::EffortPrice(int width, int height)
 }
 
 EffortPrice::PixelStats& EffortPrice::BeginPass() {
-  pass_.medium.assign(pixels_, {}), pass_.surface.assign(pixels_, {}), pass_.remainder.assign(pixels_, {});
+  pass_.medium.resize(pixels_), pass_.surface.resize(pixels_), pass_.remainder.resize(pixels_);
   return pass_;
 }
 

@@ -77,6 +77,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
       if (!stats) return;
       ++taken.gathers;
+      if (!decided && !(s.over_equiangular > 0)) return;  // nothing else to learn from it
       double y = (throughput * x).Rms() / effort_weight;
       if (decided) {
         taken.measured += effort_weight * y * y;
