@@ -40,7 +40,7 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
       if (!(p.calls > 0)) continue;
       ++into.called[kind];
       if (!(price_[kind] > 0)) continue;  // the first pass takes every gather once
-      if (p.decided > 0) ++into.decided[kind], ++decided_pixels_[kind];
+      if (p.decided > 0) ++into.decided[kind];
       (p.decided > 0 ? decided_ : undecided_)[kind] += p;
     }
   for (std::size_t i = 0; i < pixels_; ++i) {
@@ -60,9 +60,7 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
 }
 
 void EffortPrice::Refresh() {
-  // The variance and cost of the estimator the decisions made: the controlled passes' once
-  // there are two (the first pass's would stay in the sums long after).
-  const Passes& p = passes_of_[1].count >= 2 ? passes_of_[1] : passes_of_[0];
+  const Passes& p = measured();
   const double n = p.count;
   std::vector<double> pixels(pixels_);
   if (n >= 2) {
@@ -87,12 +85,7 @@ void EffortPrice::Refresh() {
   for (std::size_t k = 0; k < kept; ++k) variance += pixels[k];
   variance /= double(kept);
   const double pixel_cost = p.pixel_seconds / (n * double(pixels_));
-  value_of_time_ = variance > 0 ? pixel_cost / variance : 0;
   variance_ = variance, pixel_cost_ = pixel_cost;
-  for (int kind = 0; kind < 2; ++kind) {
-    called_share_[kind] = p.called[kind] / (n * double(pixels_));
-    decided_share_[kind] = p.called[kind] > 0 ? p.decided[kind] / p.called[kind] : 0;
-  }
   for (int kind = 0; kind < 2; ++kind) {
     const EffortStats& g = gathers_[kind];
     const EffortStats& u = uncontrolled_[kind];
@@ -115,8 +108,8 @@ double EffortPrice::remainder_demand(int x, int y) const {
   constexpr double kFewPaths = 16;  // below which a tile's cost is too noisy
   const RemainderStats& timed = tile.paths >= kFewPaths ? tile : remainder_;
   const double cost = timed.paths > 0 ? timed.seconds / timed.paths : 0;
-  if (!(value_of_time_ > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
-  return std::sqrt(tile.m2 / tile.launches / cost * value_of_time_);
+  if (!(value_of_time() > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
+  return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
 }
 
 bool EffortPrice::cheapest(GatherKind kind, double u) const {
@@ -124,14 +117,15 @@ bool EffortPrice::cheapest(GatherKind kind, double u) const {
   const EffortStats& all = gathers_[static_cast<int>(kind)];
   if (!(all.rule_samples > 0 && all.cheapest_samples > 0)) return false;
   const double saved = all.rule_seconds / all.rule_samples - all.cheapest_seconds / all.cheapest_samples;
-  return value_of_time_ * all.cheapest_excess < all.rule_samples * saved && !(u < kExplore);
+  return value_of_time() * all.cheapest_excess < all.rule_samples * saved && !(u < kExplore);
 }
 
 bool EffortPrice::decide(GatherKind kind, double u) const {
   const int k = static_cast<int>(kind);
   const EffortStats& d = decided_[k];
   const EffortStats& once = undecided_[k];
-  if (!(decided_pixels_[k] > 0 && variance_ > 0 && pixel_cost_ > 0)) return true;
+  const double decided_pixels = passes_of_[1].decided[k];  // the pixels in decided_
+  if (!(decided_pixels > 0 && variance_ > 0 && pixel_cost_ > 0)) return true;
   // Per pixel that decided, the variance its decisions added (negative: removed) and their
   // seconds against the same VRLs each taken once: the time outside sampling less the
   // undecided calls' per VRL (0 before any: it then overstates the decisions' cost until the
@@ -142,14 +136,16 @@ bool EffortPrice::decide(GatherKind kind, double u) const {
   const double sample_cost = timed.gathers > 0 ? timed.sample_seconds / double(timed.gathers) : 0;
   const double loop = once.vrls > 0 ? (once.seconds - once.sample_seconds) / once.vrls : 0;
   const double seconds = (d.seconds - d.sample_seconds) - d.vrls * loop + (double(d.gathers) - d.vrls) * sample_cost;
-  const double scale = called_share_[k] / decided_pixels_[k];
+  const Passes& p = measured();
+  const double scale = p.called[k] / (p.count * double(pixels_)) / decided_pixels;
   const double dv = scale * (d.roulette_excess + within(kind) * d.split_excess), dt = scale * seconds;
   // The measured variance and cost are of a mixture, the decided share of the pixels with
   // the decisions' change, the rest without: the two states' products compared whole, not
   // to first order (turning the decisions off is no small change).
-  const double v_once = variance_ - decided_share_[k] * dv, t_once = pixel_cost_ - decided_share_[k] * dt;
-  if (!(v_once > 0)) return true;    // the decisions' saving overestimated: keep them
-  if (!(t_once > 0)) return u < kExplore;  // their cost overestimated
+  const double decided_share = p.called[k] > 0 ? p.decided[k] / p.called[k] : 0;
+  const double v_once = variance_ - decided_share * dv, t_once = pixel_cost_ - decided_share * dt;
+  if (!(v_once > 0)) return true;          // the variance they add estimated above the whole: keep them
+  if (!(t_once > 0)) return u < kExplore;  // the time they take estimated above the whole
   return (v_once + dv) * (t_once + dt) < v_once * t_once || u < kExplore;
 }
 
@@ -160,8 +156,8 @@ double EffortPrice::call_demand(GatherKind kind, int x, int y) const {
   auto decisions = [](const EffortStats& s) { return (s.seconds - s.sample_seconds) / s.call_rate; };
   constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy
   const double cost = tile.call_rate >= kFewCalls ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
-  if (!(value_of_time_ > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;
-  return std::sqrt(tile.call_m2 / tile.calls / cost * value_of_time_);
+  if (!(value_of_time() > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;
+  return std::sqrt(tile.call_m2 / tile.calls / cost * value_of_time());
 }
 
 }  // namespace vrlis::integration

@@ -143,10 +143,12 @@ class EffortPrice {
   int width_ = 0, height_ = 0, passes_ = 0;
   std::size_t pixels_ = 0;
   Passes passes_of_[2];
-  double value_of_time_ = 0;  // pixel cost / pixel variance
+  // The variance and cost of a pixel per pass, of the estimator the decisions made.
   double variance_ = 0, pixel_cost_ = 0;
-  double called_share_[2] = {0, 0}, decided_share_[2] = {0, 0};  // of the pixels, of those called
-  double decided_pixels_[2] = {0, 0};  // the pixels in decided_
+  double value_of_time() const { return variance_ > 0 ? pixel_cost_ / variance_ : 0; }
+  // The passes those come from: the controlled ones once there are two (the first pass's
+  // would stay in the sums long after).
+  const Passes& measured() const { return passes_of_[1].count >= 2 ? passes_of_[1] : passes_of_[0]; }
   int tiles_x_ = 0;
   EffortStats gathers_[2];
   std::vector<EffortStats> tiles_[2];
