@@ -37,6 +37,8 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
       const EffortStats& p = (*stats[kind])[i];
       total[kind] += p;
       tiles_[kind][Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += p;
+      into.switchable[kind] += p.rule_samples + p.cheapest_samples + p.mixture_samples;
+      into.cheapest[kind] += p.cheapest_samples, into.mixture[kind] += p.mixture_samples;
       if (!(p.calls > 0)) continue;
       ++into.called[kind];
       if (!(price_[kind] > 0)) continue;  // the first pass takes every gather once
@@ -112,12 +114,52 @@ double EffortPrice::remainder_demand(int x, int y) const {
   return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
 }
 
-bool EffortPrice::cheapest(GatherKind kind, double u) const {
-  if (passes_ < kMinPasses) return u < kPilot;
-  const EffortStats& all = gathers_[static_cast<int>(kind)];
-  if (!(all.rule_samples > 0 && all.cheapest_samples > 0)) return false;
-  const double saved = all.rule_seconds / all.rule_samples - all.cheapest_seconds / all.cheapest_samples;
-  return value_of_time() * all.cheapest_excess < all.rule_samples * saved && !(u < kExplore);
+vrlis::EffortModel EffortPrice::model(GatherKind kind, double u) const {
+  using vrlis::EffortModel;
+  if (passes_ < kMinPasses) {
+    if (u < kPilot) return EffortModel::Cheapest;
+    return u < 2 * kPilot ? EffortModel::Mixture : EffortModel::Chosen;
+  }
+  const int k = static_cast<int>(kind);
+  const EffortStats& all = gathers_[k];
+  const Passes& p = measured();
+  const double switchable = p.switchable[k];
+  if (!(all.rule_samples > all.mixture_measured && switchable > 0 && variance_ > 0 && pixel_cost_ > 0))
+    return EffortModel::Chosen;
+  // Per pixel and pass, what a model changes against the rule were every sample below the
+  // accurate tier taken with it: the variance it adds (estimated from the rule's samples) and
+  // its seconds over the rule's; and its share of those samples in the measured passes.
+  const double samples = switchable / (p.count * double(pixels_));
+  const double rule_seconds = all.rule_seconds / (all.rule_samples - all.mixture_measured);
+  struct Change {
+    EffortModel model;
+    double dv = 0, dt = 0, share = 0;
+    bool known = false;
+  };
+  auto change = [&](EffortModel m, double excess, double measured, double taken, double seconds, double share) {
+    if (!(measured > 0 && taken > 0)) return Change{m};
+    return Change{m, samples * excess / measured, samples * (seconds / taken - rule_seconds), share, true};
+  };
+  const Change alternatives[] = {
+      change(EffortModel::Cheapest, all.cheapest_excess, all.rule_samples, all.cheapest_samples, all.cheapest_seconds,
+             p.cheapest[k] / switchable),
+      change(EffortModel::Mixture, all.mixture_excess, all.mixture_measured, all.mixture_samples, all.mixture_seconds,
+             p.mixture[k] / switchable)};
+  // The measured variance and cost are of a mix, each model's share of the samples with its
+  // change and the rest with the rule's: the states compared whole, not to first order (one
+  // model for the whole image is no small change).
+  double v_rule = variance_, t_rule = pixel_cost_;
+  for (const Change& c : alternatives) v_rule -= c.share * c.dv, t_rule -= c.share * c.dt;
+  if (!(v_rule > 0 && t_rule > 0)) return EffortModel::Chosen;  // estimates that contradict the measurement
+  EffortModel best = EffortModel::Chosen;
+  double least = v_rule * t_rule;
+  for (const Change& c : alternatives)
+    if (c.known && (v_rule + c.dv) * (t_rule + c.dt) < least) least = (v_rule + c.dv) * (t_rule + c.dt), best = c.model;
+  return u < kExplore ? EffortModel::Chosen : best;
+}
+
+bool EffortPrice::measure_mixture(GatherKind kind, double u) const {
+  return u < kMeasure || model(kind, 1.0) == vrlis::EffortModel::Mixture;
 }
 
 bool EffortPrice::decide(GatherKind kind, double u) const {

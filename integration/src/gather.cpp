@@ -51,13 +51,15 @@ namespace {
 
 // The library's one-call gathers over VRLs [first, last), kChunk at a time (a multiple of
 // the library's batch, so that images do not depend on it): segments and predicted weights
-// on the stack, the scene's visibility as the callback. `decided`: whether the effort control
-// decides each gather (what its statistics then measure).
+// on the stack, the scene's visibility as the callback. `effort`: the call's, which says what
+// its statistics measure (whether each gather is decided, whether the mixture is measured).
 constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
 template <typename GatherShareOf, typename GatherChunk>
-Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput, bool decided,
-                       EffortStats* stats, WeightLog* weight_log, GatherShareOf&& share, GatherChunk&& gather_chunk) {
+Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput,
+                       const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
+                       GatherShareOf&& share, GatherChunk&& gather_chunk) {
+  const bool decided = effort.on && effort.decide;
   Spectrum sum;
   vrlis::EffortTally tally;
   EffortStats taken;
@@ -77,13 +79,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
       if (!stats) return;
       ++taken.gathers;
-      if (!decided && !(s.over_equiangular > 0)) return;  // nothing else to learn from it
+      if (!decided && !(s.over_equiangular > 0 || s.over_mixture > 0)) return;  // nothing else to learn from it
       double y = (throughput * x).Rms() / effort_weight;
       if (decided) {
         taken.measured += effort_weight * y * y;
         (effort_weight > 1 ? taken.roulette_excess : taken.split_excess) += effort_weight * y * y * (effort_weight - 1);
       }
       if (s.over_equiangular > 0) taken.cheapest_excess += vrlis::Sqr(effort_weight * y) * (s.over_equiangular - 1);
+      if (s.over_mixture > 0) taken.mixture_excess += vrlis::Sqr(effort_weight * y) * (s.over_mixture - 1);
       ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     gather_chunk(segments, weights, n, connect, stats ? &tally : nullptr);
@@ -99,9 +102,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     taken.sample_seconds = tally.sample_seconds;
     constexpr int kRule = static_cast<int>(vrlis::EffortModel::Chosen);
     constexpr int kCheapest = static_cast<int>(vrlis::EffortModel::Cheapest);
-    taken.rule_samples = double(tally.model_samples[kRule]), taken.rule_seconds = tally.model_seconds[kRule];
+    constexpr int kMixture = static_cast<int>(vrlis::EffortModel::Mixture);
+    taken.rule_samples = double(tally.model_samples[kRule]);
+    if (!effort.measure_mixture) taken.rule_seconds = tally.model_seconds[kRule];  // the measuring's not the rule's
     taken.cheapest_samples = double(tally.model_samples[kCheapest]);
     taken.cheapest_seconds = tally.model_seconds[kCheapest];
+    taken.mixture_samples = double(tally.model_samples[kMixture]);
+    taken.mixture_seconds = tally.model_seconds[kMixture];
+    if (effort.measure_mixture) taken.mixture_measured = taken.rule_samples;
     *stats += taken;
   }
   return sum;
@@ -125,7 +133,7 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
   auto share = [&](const vrlis::GatherSample<float>& s) {
     return GatherShareOf({s.camera_point, {}, false}, s, bound);
   };
-  return SumOverChunks(scene, first, last, throughput, effort.on && effort.decide, stats, weight_log, share,
+  return SumOverChunks(scene, first, last, throughput, effort, stats, weight_log, share,
                        [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
                            vrlis::EffortTally* tally) {
                          vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
@@ -156,8 +164,8 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
   Rng own = rng.Split();
   const ConnectionEnd from{p, nf, true};
   auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, bound); };
-  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo,
-                                effort.on && effort.decide, stats, weight_log, share,
+  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, effort, stats,
+                                weight_log, share,
                                 [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
                                     auto& connect, vrlis::EffortTally* tally) {
                                   vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,

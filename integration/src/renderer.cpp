@@ -81,10 +81,12 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
     s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
     Rng choice(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + x, StreamPurpose::EffortModel);
-    m.cheapest = price_.cheapest(GatherKind::Medium, choice.Uniform());
-    s.cheapest = price_.cheapest(GatherKind::Surface, choice.Uniform());
+    m.model = price_.model(GatherKind::Medium, choice.Uniform());
+    s.model = price_.model(GatherKind::Surface, choice.Uniform());
     m.decide = price_.decide(GatherKind::Medium, choice.Uniform());
     s.decide = price_.decide(GatherKind::Surface, choice.Uniform());
+    m.measure_mixture = m.model == vrlis::EffortModel::Chosen && price_.measure_mixture(GatherKind::Medium, choice.Uniform());
+    s.measure_mixture = s.model == vrlis::EffortModel::Chosen && price_.measure_mixture(GatherKind::Surface, choice.Uniform());
     // The remainder is split where it asks for more paths, never rouletted: its paths cost too
     // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path

@@ -249,13 +249,12 @@ std::vector<std::pair<int, Real>> Samples(const Setup& s, vrlis::GatherSamplers 
 
 // A call that does not decide (EffortSettings::decide false) takes every gather once with
 // weight 1, sample for sample as without the control, at any price; with `auto` and the
-// cheapest model asked for, equiangular's samples. The same prices change the samples of a
+// cheapest model or the mixture asked for, that model's samples. The same prices change the samples of a
 // call that decides (so the flag is what keeps them).
 TEST_CASE("a call that does not decide takes every gather once, as without the control", "[gather][effort]") {
   Setup s = MakeSetup();
   auto [lo, hi] = BoundRange(s);
   const auto automatic = *vrlis::ParseGatherSamplers("auto");
-  const auto equiangular = *vrlis::ParseGatherSamplers("equiangular");
   // Every demand at the floor, spread around one, above the accurate tier.
   for (double price : {vrlis::Sqr(0.04 / hi), 1 / (lo * hi), vrlis::Sqr(50 * 20 / lo)}) {
     INFO("price " << price);
@@ -269,14 +268,17 @@ TEST_CASE("a call that does not decide takes every gather once, as without the c
       CHECK(Samples(s, method, undecided) == off);
       CHECK(Samples(s, method, vrlis::EffortSettings{true, price}) != off);
     }
-    undecided.cheapest = true;
-    CHECK(Samples(s, automatic, undecided) == Samples(s, equiangular, {}));
+    for (auto [model, name] : {std::pair{vrlis::EffortModel::Cheapest, "equiangular"},
+                               std::pair{vrlis::EffortModel::Mixture, "cauchy-mixture"}}) {
+      undecided.model = model;
+      CHECK(Samples(s, automatic, undecided) == Samples(s, *vrlis::ParseGatherSamplers(name), {}));
+    }
   }
 }
 
 // `auto` under a price: gathers asking for more than `accurate` ceilings take the most
 // accurate model, sample for sample; those below, at the floor too, auto's own rule (neither
-// that nor the cheapest model) unless the call asks for the cheapest (EffortSettings::cheapest);
+// that nor the cheapest model) unless the call asks for the cheapest (EffortSettings::model);
 // the mixture of models stays unbiased (a sabotaged 1 / q fails).
 TEST_CASE("auto with the effort control takes the model its demand pays for", "[gather][effort]") {
   Setup s = MakeSetup();
@@ -291,14 +293,16 @@ TEST_CASE("auto with the effort control takes the model its demand pays for", "[
   CHECK(Samples(s, automatic, middle) != Samples(s, *vrlis::ParseGatherSamplers("equiangular"), middle));
   vrlis::EffortSettings accurate{true, vrlis::Sqr(50 * 20 / lo)};  // every demand above 2.3 ceilings
   CHECK(Samples(s, automatic, accurate) == Samples(s, *vrlis::ParseGatherSamplers("full-product+marginal"), accurate));
-  // A call that asks for the cheapest model takes equiangular sampling below the accurate
-  // tier, priced or not, and the accurate model above it.
-  for (vrlis::EffortSettings e : {vrlis::EffortSettings{true}, middle, accurate}) {
-    e.cheapest = true;
-    const char* expected = e.price == accurate.price ? "full-product+marginal" : "equiangular";
-    INFO("price " << e.price);
-    CHECK(Samples(s, automatic, e) == Samples(s, *vrlis::ParseGatherSamplers(expected), e));
-  }
+  // A call that asks for the cheapest model or the mixture takes it below the accurate tier,
+  // priced or not, and the accurate model above it.
+  for (auto [model, name] : {std::pair{vrlis::EffortModel::Cheapest, "equiangular"},
+                             std::pair{vrlis::EffortModel::Mixture, "cauchy-mixture"}})
+    for (vrlis::EffortSettings e : {vrlis::EffortSettings{true}, middle, accurate}) {
+      e.model = model;
+      const char* expected = e.price == accurate.price ? "full-product+marginal" : name;
+      INFO("price " << e.price << ", " << name);
+      CHECK(Samples(s, automatic, e) == Samples(s, *vrlis::ParseGatherSamplers(expected), e));
+    }
   // Demands spread over both models: 1.0 at the geometric middle of the predictions.
   s.method = automatic;
   vrlis::EffortSettings mixed{true, 1 / (lo * hi)};
@@ -308,43 +312,58 @@ TEST_CASE("auto with the effort control takes the model its demand pays for", "[
   CHECK(Z(Estimate(s, mixed, 20000, true), off) > 4);
 }
 
-// GatherSample::over_equiangular: over auto's samples, weight^2 x over_equiangular estimates
-// equiangular sampling's second moment (the same step one), within 4 standard errors, on
-// queries where auto's rule takes a fit (a dense medium, a peaked lobe); weight^2 alone (the
-// sabotage) estimates auto's own, which is rejected. Other samplers leave it 0.
-TEST_CASE("auto's samples estimate equiangular sampling's second moment", "[gather][effort]") {
+// GatherSample::over_equiangular and over_mixture: over auto's samples, weight^2 x the ratio
+// estimates equiangular sampling's and the mixture's second moments (the same step one),
+// within 4 standard errors, on queries where auto's rule takes a fit (a dense medium, a
+// peaked lobe); weight^2 alone (the sabotage) estimates auto's own, which is rejected. Other
+// samplers leave both 0, and auto leaves over_mixture 0 unless the call measures it.
+TEST_CASE("auto's samples estimate equiangular sampling's and the mixture's second moments", "[gather][effort]") {
   Setup s = MakeSetup();
   s.medium = {Real(0.8), Real(1.5), Real(2)};  // g, sigma_s, sigma_t: long optical depths, a peaked lobe
-  auto second_moments = [&](const char* method, bool over) {
+  vrlis::EffortSettings measure;
+  measure.measure_mixture = true;
+  using Ratio = Real vrlis::GatherSample<Real>::*;
+  auto second_moments = [&](const char* method, Ratio over) {
     std::vector<vrlis::RunningMoments> m(s.vrls.size());
     std::mt19937 rng(9);
     std::uniform_real_distribution<Real> u(0, 1);
     for (int call = 0; call < 20000; ++call)
-      vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers(method), {}, s.camera, s.medium, s.vrls.data(),
+      vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers(method), measure, s.camera, s.medium, s.vrls.data(),
                               s.weights.data(), int(s.vrls.size()), [&] { return u(rng); },
                               [&](int i, const vrlis::GatherSample<Real>& g, Real) {
-                                m[std::size_t(i)].add(double(g.weight) * g.weight * (over ? g.over_equiangular : 1));
+                                m[std::size_t(i)].add(double(g.weight) * g.weight * (over ? g.*over : 1));
                               });
     return m;
   };
-  const auto equiangular = second_moments("equiangular", false), estimated = second_moments("auto", true),
-             sabotaged = second_moments("auto", false);
-  int rejected = 0;
-  for (std::size_t i = 0; i < s.vrls.size(); ++i) {
-    auto z = [&](const vrlis::RunningMoments& m) {
-      return std::abs(m.mean() - equiangular[i].mean()) / std::hypot(m.standard_error(), equiangular[i].standard_error());
-    };
-    INFO("VRL " << i << ": equiangular " << equiangular[i].mean() << ", estimated " << estimated[i].mean()
+  const auto sabotaged = second_moments("auto", nullptr);
+  for (auto [name, over] : {std::pair{"equiangular", &vrlis::GatherSample<Real>::over_equiangular},
+                            std::pair{"cauchy-mixture", &vrlis::GatherSample<Real>::over_mixture}}) {
+    const auto exact = second_moments(name, nullptr), estimated = second_moments("auto", over);
+    int rejected = 0;
+    for (std::size_t i = 0; i < s.vrls.size(); ++i) {
+      auto z = [&](const vrlis::RunningMoments& m) {
+        return std::abs(m.mean() - exact[i].mean()) / std::hypot(m.standard_error(), exact[i].standard_error());
+      };
+      INFO(name << ", VRL " << i << ": its own " << exact[i].mean() << ", estimated " << estimated[i].mean()
                 << ", auto's own " << sabotaged[i].mean());
-    CHECK(z(estimated[i]) < 4);
-    rejected += z(sabotaged[i]) > 4;
+      CHECK(z(estimated[i]) < 4);
+      rejected += z(sabotaged[i]) > 4;
+    }
+    CHECK(rejected >= int(s.vrls.size()) / 2);
   }
-  CHECK(rejected >= int(s.vrls.size()) / 2);
-  bool any = false;
-  vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers("novak"), {}, s.camera, s.medium, s.vrls.data(), s.weights.data(),
-                          int(s.vrls.size()), [] { return Real(0.5); },
-                          [&](int, const vrlis::GatherSample<Real>& g, Real) { any |= g.over_equiangular != 0; });
-  CHECK_FALSE(any);
+  // Whether any of a method's samples carries each ratio: {over_equiangular, over_mixture}.
+  auto carried = [&](const char* method, const vrlis::EffortSettings& e) {
+    std::pair<bool, bool> any{false, false};
+    vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers(method), e, s.camera, s.medium, s.vrls.data(),
+                            s.weights.data(), int(s.vrls.size()), [] { return Real(0.5); },
+                            [&](int, const vrlis::GatherSample<Real>& g, Real) {
+                              any.first |= g.over_equiangular != 0;
+                              any.second |= g.over_mixture != 0;
+                            });
+    return any;
+  };
+  CHECK(carried("novak", measure) == std::pair{false, false});
+  CHECK(carried("auto", {}) == std::pair{true, false});
 }
 
 // MediumGatherBounds and SurfaceGatherBounds (vector lanes) against the quick and tight bounds

@@ -18,6 +18,9 @@
 //   remainder holds most of the variance, and under a quarter of that in room, whose holds almost none;
 // - `auto` takes the cheapest model where the variance it adds is worth less than the time it
 //   saves: in room (gathers without variance), not in the bidirectional scene at g = 0.9;
+// - the price compares the image's states whole: on synthetic passes it takes the mixture
+//   where its added variance and saved time lower V x T (also where first order says the
+//   rule) and the rule where they raise it;
 // - the gathers are decided one by one where that pays and taken once where it does not: in
 //   room (decisions skip almost every gather), not in the bidirectional scene at g = 0 with
 //   equiangular sampling (bounds that cost more than the gathers, for little variance);
@@ -84,7 +87,7 @@ bool Same(const vrlis::integration::Film& a, const vrlis::integration::Film& b) 
 }  // namespace
 
 TEST_CASE("a pass's effort decisions come from the passes before it", "[render][effort]") {
-  // The scene's own sampler, and `auto`, whose model choice is learned too (EffortPrice::cheapest).
+  // The scene's own sampler, and `auto`, whose model choice is learned too (EffortPrice::model).
   const bool automatic = GENERATE(false, true);
   INFO("auto " << automatic);
   auto built = vrlis::scenes::BuildScene("room", {});
@@ -220,9 +223,10 @@ TEST_CASE("effort: the remainder is split where its paths hold the noise, never 
   CHECK(room < corner / 4);    // its remainder holds almost none
 }
 
-TEST_CASE("effort: auto takes the cheapest model where the variance it adds is worth less than its time",
+TEST_CASE("effort: auto takes the model whose variance is worth less than the time it saves",
           "[render][effort]") {
-  auto cheapest = [](const char* scene, float g) {
+  using vrlis::EffortModel;
+  auto model = [](const char* scene, float g) {
     vrlis::scenes::MediumOverrides medium;
     medium.g = g;
     auto built = vrlis::scenes::BuildScene(scene, medium);
@@ -231,10 +235,46 @@ TEST_CASE("effort: auto takes the cheapest model where the variance it adds is w
     s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
     vrlis::integration::VrlRenderer r(built->scene, s);
     for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
-    return r.effort_price().cheapest(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+    return r.effort_price().model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
   };
-  CHECK(cheapest("room", 0.5f));              // its gathers hold almost none of the variance
-  CHECK_FALSE(cheapest("bidirectional", 0.9f));  // equiangular sampling there has many times a fit's
+  CHECK(model("room", 0.5f) == EffortModel::Cheapest);  // its gathers hold almost none of the variance
+  CHECK(model("bidirectional", 0.9f) != EffortModel::Cheapest);  // equiangular sampling there has many times a fit's
+}
+
+// Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (variance V = 0.04 / 3 over the
+// four passes after the first) at 5 us a pixel, each pixel taking 10 samples of the rule, at
+// 400 ns in the odd pixels and measuring the mixture's added variance, `excess` a pixel, in the
+// even ones; the first pass's pixel 1 also takes 10 samples of the mixture at 200 ns. Per pixel, the mixture
+// changes V by `excess` and T by -2 us: whole, it pays below 2 V / 3 = 0.0089; to first order
+// (excess / V < 2 / 5) only below 0.0053.
+TEST_CASE("effort: the price takes the model whose variance x time is least", "[render][effort]") {
+  using vrlis::EffortModel;
+  using vrlis::integration::EffortStats;
+  auto model = [](double excess) {
+    constexpr int kSide = 8;
+    vrlis::integration::EffortPrice price(kSide, kSide);
+    for (int pass = 0; pass < 5; ++pass) {
+      auto& pixels = price.BeginPass();
+      for (std::size_t i = 0; i < pixels.medium.size(); ++i) {
+        EffortStats p;
+        p.calls = 1, p.gathers = 10, p.seconds = 5e-6, p.predicted = p.measured = 1;  // priced from the second pass
+        p.rule_samples = 10;
+        if (i % 2) p.rule_seconds = 10 * 400e-9;
+        else p.mixture_measured = 10, p.mixture_excess = excess;
+        if (pass == 0 && i == 1) p.gathers += 10, p.mixture_samples = 10, p.mixture_seconds = 10 * 200e-9;
+        pixels.medium[i] = p;
+        pixels.surface[i] = {};
+        pixels.remainder[i] = {};
+      }
+      vrlis::integration::Film film(kSide, kSide);
+      for (auto& v : film.pixels) v = vrlis::integration::Spectrum(pass % 2 ? 0.9f : 1.1f);
+      price.Add(film, kSide * kSide * 5e-6);
+    }
+    return price.model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+  };
+  CHECK(model(0.002) == EffortModel::Mixture);
+  CHECK(model(0.007) == EffortModel::Mixture);  // the rule to first order
+  CHECK(model(0.02) == EffortModel::Chosen);
 }
 
 TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort]") {

@@ -15,6 +15,12 @@
 
 namespace vrlis {
 
+// The model a gather is taken with (ChooseEffortModel): the sampler asked for (with `auto`, its
+// per-query rule), the accurate one (VrlMarginal, FullProduct), the cheapest (VrlPoint,
+// equiangular) or the thesis's mixture (VrlPoint, CauchyMixture).
+enum class EffortModel { Chosen, Accurate, Cheapest, Mixture };
+inline constexpr int kEffortModels = 4;
+
 // The effort control's parameters. `price` is what one unit of a gather's second moment is
 // worth in gathers: (image cost / image variance) / (cost of one gather), learned by the
 // renderer from earlier passes only (a decision that saw the current pass would bias it).
@@ -42,21 +48,23 @@ struct EffortSettings {
   // 1 / rate times as often: every gather's expected samples and weights stay those of its
   // own demand, and the calls not taken save their bounds. 1, more or NaN: every call taken.
   double call_demand = 1;
-  // With the `auto` sampler: this call's gathers below the accurate tier take the cheapest
-  // model (VrlPoint, equiangular) instead of auto's per-query rule, whose prediction and
-  // dispatch cost as much as an equiangular gather. The renderer's choice from earlier
-  // passes (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
-  bool cheapest = false;
+  // With the `auto` sampler: the model of this call's gathers below the accurate tier, auto's
+  // per-query rule (Chosen), whose prediction and dispatch cost as much as an equiangular
+  // gather and which knows the variance of one gather only, or one model for the whole image:
+  // the cheapest or the mixture. The renderer's choice from earlier passes
+  // (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
+  EffortModel model = EffortModel::Chosen;
+  // With the `auto` sampler: the rule's samples also carry their density over the mixture's
+  // (GatherSample::over_mixture), at the cost of a mixture fit each, for the renderer to
+  // weigh that model against the rule.
+  bool measure_mixture = false;
   // Whether the call's gathers are decided one by one (bounds, roulette, splitting, the
   // accurate tier). False: each taken once with weight 1 and no bound computed, the model by
-  // `cheapest` alone; the renderer's choice from earlier passes where the decisions cost more
+  // `model` alone; the renderer's choice from earlier passes where the decisions cost more
   // time than the variance they save is worth (docs/maths.md#effort-decide).
   bool decide = true;
 };
 
-// The model a gather is taken with (ChooseEffortModel).
-enum class EffortModel { Chosen, Accurate, Cheapest };
-inline constexpr int kEffortModels = 3;
 
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
 // moments (w x bound)^2, summed over the samples taken with their effort weights 1 / q (an
@@ -109,11 +117,11 @@ inline double EffortCallRate(const EffortSettings& e) {
 // The model a gather's demand pays for (docs/maths.md#effort-models): far above the ceiling
 // its variance outweighs its time, and the most accurate one wins; below, the per-query rule
 // of the sampler asked for, at the floor too (the cheapest model's second moment can exceed
-// the model-blind prediction many times), or the cheapest model where the call asks for it
-// (EffortSettings::cheapest).
+// the model-blind prediction many times), or the image's model where the call asks for one
+// (EffortSettings::model).
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
   if (EffortPriced(e) && SplitDemand(e, demand) >= e.accurate * e.ceiling) return EffortModel::Accurate;
-  return e.on && e.cheapest ? EffortModel::Cheapest : EffortModel::Chosen;
+  return e.on && e.model != EffortModel::Accurate ? e.model : EffortModel::Chosen;
 }
 
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.

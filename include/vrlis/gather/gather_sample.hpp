@@ -34,8 +34,10 @@ struct GatherSample {
   // Where `auto`'s per-query rule chose the step's model (the camera step; at a surface the
   // VRL step): the sample's density over equiangular sampling's at the same point; else 0.
   // E[weight^2 x over_equiangular] over these samples is equiangular sampling's second
-  // moment, which a renderer weighs against auto's own (EffortSettings::cheapest).
+  // moment, which a renderer weighs against auto's own (EffortSettings::model).
   Real over_equiangular = 0;
+  // The same over CauchyMixture's density, where the call asked (EffortSettings::measure_mixture).
+  Real over_mixture = 0;
 
   bool contributes() const { return weight > 0; }
   // The weight in one channel of the medium, its coefficients built as the query's were (its
@@ -71,6 +73,14 @@ template <typename Sampler, typename Real>
 Real OverEquiangular(const Sampler& sampler, SegmentSample<Real> s) {
   const Real uniform = sampler.domain().dtheta_dt(s.t) / sampler.domain().width();
   return FiniteOrZero(s.pdf / uniform);
+}
+
+// The same over the density of `Other` (an angle distribution) fitted to the sampler's query
+// q on its domain: the two share the angle's Jacobian.
+template <typename Other, typename Sampler, typename Real>
+Real OverDensity(const Sampler& sampler, const SegmentQuery<Real>& q, SegmentSample<Real> s) {
+  const auto& domain = sampler.domain();
+  return FiniteOrZero(s.pdf / (Other(q, domain).pdf(domain.offset_at(s.t)) * domain.dtheta_dt(s.t)));
 }
 
 template <typename Real>

@@ -137,13 +137,14 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
           auto with = [&](auto one, auto two) {
             SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
-                ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples);
+                ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples, effort.measure_mixture);
           };
           if constexpr (policy) {
+            using VrlPointSampler = Type<VrlPointEntry::Sampler<Real>>;
             if (model == EffortModel::Accurate)
               return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Type<FullProductEntry::Sampler<Real>>{});
-            if (model == EffortModel::Cheapest)
-              return with(Type<VrlPointEntry::Sampler<Real>>{}, Type<EquiangularEntry::Sampler<Real>>{});
+            if (model == EffortModel::Cheapest) return with(VrlPointSampler{}, Type<EquiangularEntry::Sampler<Real>>{});
+            if (model == EffortModel::Mixture) return with(VrlPointSampler{}, Type<CauchyMixtureEntry::Sampler<Real>>{});
           }
           with(Type<VrlSampler>{}, Type<StepTwo>{});
         },
@@ -169,11 +170,12 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
           auto with = [&](auto sampler) {
             SampleSurfaceGathers<typename decltype(sampler)::type>(ValidQuery{}, point, normal, medium, b.segments,
-                                                                   b.count, b.u[0], samples);
+                                                                   b.count, b.u[0], samples, effort.measure_mixture);
           };
           if constexpr (policy) {
             if (model == EffortModel::Accurate) return with(Type<FullProductEntry::Sampler<Real>>{});
             if (model == EffortModel::Cheapest) return with(Type<EquiangularEntry::Sampler<Real>>{});
+            if (model == EffortModel::Mixture) return with(Type<CauchyMixtureEntry::Sampler<Real>>{});
           }
           with(Type<Sampler>{});
         },

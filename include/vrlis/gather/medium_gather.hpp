@@ -101,10 +101,13 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // gather is a long chain of dependent operations, the gathers of a phase are independent,
 // and a loop over them lets the processor overlap their chains, which one whole gather after
 // another (too many instructions for its reordering window) did not. Same numbers, fewer cycles.
+// With `auto` as the camera sampler and measure_mixture, each sample also carries
+// GatherSample::over_mixture (a CauchyMixture fit per sample).
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
                                           const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
-                                          const Real* u_camera, GatherSample<Real>* out) {
+                                          const Real* u_camera, GatherSample<Real>* out,
+                                          bool measure_mixture = false) {
   std::optional<StepOneSampler> step_one;  // fitted for vrls[fitted]
   int fitted = -1;
   for (int first = 0; first < count; first += kVrlPointBatch) {
@@ -120,21 +123,27 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       }
     }
     std::optional<CameraSampler> fit[kVrlPointBatch];  // none where step one sampled nothing
-    for (int i = 0; i < n; ++i) {
-      if (!detail::Usable(v[i])) continue;
+    auto step_query = [&](int i) {
       MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
-      fit[i].emplace(ValidQuery{}, CameraStepQuery(q, q.vrl.at(v[i].t)));
-    }
+      return CameraStepQuery(q, q.vrl.at(v[i].t));
+    };
+    for (int i = 0; i < n; ++i)
+      if (detail::Usable(v[i])) fit[i].emplace(ValidQuery{}, step_query(i));
     SegmentSample<Real> t[kVrlPointBatch];
-    Real over[kVrlPointBatch] = {};  // GatherSample::over_equiangular, of auto's samples
+    Real over[kVrlPointBatch] = {}, over_mixture[kVrlPointBatch] = {};  // of auto's samples
     for (int i = 0; i < n; ++i) {
       t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
-      if constexpr (std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>)
+      if constexpr (std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>) {
         if (fit[i]) over[i] = detail::OverEquiangular(*fit[i], t[i]);
+        if (fit[i] && measure_mixture)
+          over_mixture[i] = detail::OverDensity<CauchyMixtureAngle<Real>>(*fit[i], step_query(i), t[i]);
+      }
     }
     for (int i = 0; i < n; ++i) {
-      out[first + i] = FinishWithCamera(MediumGatherQuery<Real>{camera, vrls[first + i], medium}, v[i], t[i]);
-      out[first + i].over_equiangular = out[first + i].contributes() ? over[i] : Real(0);
+      GatherSample<Real>& g = out[first + i];
+      g = FinishWithCamera(MediumGatherQuery<Real>{camera, vrls[first + i], medium}, v[i], t[i]);
+      g.over_equiangular = g.contributes() ? over[i] : Real(0);
+      g.over_mixture = g.contributes() ? over_mixture[i] : Real(0);
     }
   }
 }

@@ -61,11 +61,12 @@ template <typename Sampler, typename Real>
 // Many VRLs seen from one surface point, a renderer's inner loop: out[i] is
 // SampleSurfaceGather for {point, normal, vrls[i], medium} with u[i] (each query valid), run
 // in phases over batches as SampleMediumGathers (fits, samples, integrands), one fit for a
-// run of equal VRLs (a split gather's samples): same numbers.
+// run of equal VRLs (a split gather's samples): same numbers. measure_mixture: as
+// SampleMediumGathers.
 template <typename Sampler, typename Real>
 [[gnu::flatten]] void SampleSurfaceGathers(ValidQuery, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
                                            const VrlSegment<Real>* vrls, int count, const Real* u,
-                                           GatherSample<Real>* out) {
+                                           GatherSample<Real>* out, bool measure_mixture = false) {
   constexpr int kBatch = 8;  // enough independent gathers to fill the processor's reordering window
   for (int first = 0; first < count; first += kBatch) {
     int n = std::min(kBatch, count - first);
@@ -80,14 +81,21 @@ template <typename Sampler, typename Real>
       fit[i].emplace(ValidQuery{}, VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}));
     }
     SegmentSample<Real> v[kBatch];
-    Real over[kBatch] = {};  // GatherSample::over_equiangular, of auto's samples
+    Real over[kBatch] = {}, over_mixture[kBatch] = {};  // of auto's samples
     for (int i = 0; i < n; ++i) {
       v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
-      if constexpr (std::is_same_v<Sampler, AutoEntry::Sampler<Real>>) over[i] = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
+      if constexpr (std::is_same_v<Sampler, AutoEntry::Sampler<Real>>) {
+        over[i] = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
+        if (measure_mixture)
+          over_mixture[i] = detail::OverDensity<CauchyMixtureAngle<Real>>(
+              *fit[fit_of[i]], VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}), v[i]);
+      }
     }
     for (int i = 0; i < n; ++i) {
-      out[first + i] = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
-      out[first + i].over_equiangular = out[first + i].contributes() ? over[i] : Real(0);
+      GatherSample<Real>& g = out[first + i];
+      g = FinishSurfaceGather(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}, v[i]);
+      g.over_equiangular = g.contributes() ? over[i] : Real(0);
+      g.over_mixture = g.contributes() ? over_mixture[i] : Real(0);
     }
   }
 }

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <vrlis/gather/effort.hpp>
+
 #include "film.hpp"
 
 namespace vrlis::integration {
@@ -23,8 +25,10 @@ namespace vrlis::integration {
 // been taken (docs/maths.md#effort-calls). Of the seconds, those spent sampling (the rest is
 // the decisions'). Of the samples `auto` took by its rule, the sum of (effort weight x
 // contribution)^2 x (GatherSample::over_equiangular - 1): an estimate of the variance the
-// pixel would gain had they been taken with equiangular sampling; and the samples and
-// sampling seconds of the rule and of the cheapest model (docs/maths.md#effort-cheapest). Of
+// pixel would gain had they been taken with equiangular sampling; the same with
+// over_mixture, of the rule's samples in calls that measured it (mixture_measured of them);
+// and the samples and sampling seconds of the rule (its seconds from the calls that did not
+// measure), the cheapest model and the mixture (docs/maths.md#effort-cheapest). Of
 // the calls: how many decided their gathers (vrlis::EffortSettings::decide) and the VRLs all of
 // them considered, taken or not. Of the decided gathers' samples (effort weight w, contribution
 // y), the sums of w y^2 (w - 1) over the rouletted (w > 1) and the split (w < 1): estimates of
@@ -37,17 +41,19 @@ struct EffortStats {
   double split_within = 0, split_second = 0;
   double calls = 0, call_rate = 0, call_m2 = 0;
   double decided = 0, vrls = 0, roulette_excess = 0, split_excess = 0;
-  double cheapest_excess = 0;
+  double cheapest_excess = 0, mixture_excess = 0, mixture_measured = 0;
   double rule_samples = 0, rule_seconds = 0, cheapest_samples = 0, cheapest_seconds = 0;
+  double mixture_samples = 0, mixture_seconds = 0;
   void operator+=(const EffortStats& o) {
     gathers += o.gathers, seconds += o.seconds, sample_seconds += o.sample_seconds;
     predicted += o.predicted, measured += o.measured;
     split_within += o.split_within, split_second += o.split_second;
     calls += o.calls, call_rate += o.call_rate, call_m2 += o.call_m2;
     decided += o.decided, vrls += o.vrls, roulette_excess += o.roulette_excess, split_excess += o.split_excess;
-    cheapest_excess += o.cheapest_excess;
+    cheapest_excess += o.cheapest_excess, mixture_excess += o.mixture_excess, mixture_measured += o.mixture_measured;
     rule_samples += o.rule_samples, rule_seconds += o.rule_seconds;
     cheapest_samples += o.cheapest_samples, cheapest_seconds += o.cheapest_seconds;
+    mixture_samples += o.mixture_samples, mixture_seconds += o.mixture_seconds;
   }
 };
 
@@ -109,14 +115,20 @@ class EffortPrice {
   // the earlier paths of the pixel's tile (the seconds of all paths while the tile has traced
   // few); 1 before a price is learned.
   double remainder_demand(int x, int y) const;
-  // Whether `auto`'s gathers of this kind at a pixel take the cheapest model in this pass
-  // (vrlis::EffortSettings::cheapest), u uniform in [0, 1) drawn for the pixel: where the
-  // variance equiangular sampling would add, estimated over the image from the rule's own
-  // samples, is worth less than the seconds it saves (docs/maths.md#effort-cheapest); there
-  // the rule with probability kExplore, which keeps that estimate learning. Before any
-  // price, with probability kPilot.
-  bool cheapest(GatherKind kind, double u) const;
-  static constexpr double kExplore = 1.0 / 32, kPilot = 1.0 / 16;
+  // The model of `auto`'s gathers of this kind at a pixel in this pass
+  // (vrlis::EffortSettings::model), u uniform in [0, 1) drawn for the pixel: of the rule, the
+  // cheapest model and the mixture, the one whose variance over the rule's (estimated over
+  // the image from the rule's own samples) is worth the least against the seconds it saves
+  // or costs (docs/maths.md#effort-cheapest); where that is not the rule, the rule with
+  // probability kExplore, which keeps the estimates learning. Before any price, the cheapest
+  // model and the mixture each with probability kPilot (their seconds are measured once).
+  vrlis::EffortModel model(GatherKind kind, double u) const;
+  // Whether a pixel whose gathers of this kind take the rule also measures the mixture's
+  // density at its samples (vrlis::EffortSettings::measure_mixture), u uniform in [0, 1):
+  // always where the image takes the mixture (the rule's exploring samples are then its only
+  // estimate), else with probability kMeasure (a mixture fit per sample is not free).
+  bool measure_mixture(GatherKind kind, double u) const;
+  static constexpr double kExplore = 1.0 / 32, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
   // Whether a pixel's gathers of this kind are decided one by one in this pass
   // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
   // image's earlier decided calls, the decisions' seconds exceed what the variance they save
@@ -133,12 +145,14 @@ class EffortPrice {
 
   // Of the first kMinPasses passes, or of those after: per pixel, the sums of one pass's
   // RMS RGB value and of its square, and the pixels' seconds; per kind, the pixels that
-  // called its gathers and those of them that decided the gathers under a price.
+  // called its gathers and those of them that decided the gathers under a price, and the
+  // samples below the accurate tier and those of them the cheapest model and the mixture took.
   struct Passes {
     std::vector<double> sum, sum_sq;
     double pixel_seconds = 0;
     int count = 0;
     double called[2] = {0, 0}, decided[2] = {0, 0};
+    double switchable[2] = {0, 0}, cheapest[2] = {0, 0}, mixture[2] = {0, 0};
   };
   int width_ = 0, height_ = 0, passes_ = 0;
   std::size_t pixels_ = 0;
