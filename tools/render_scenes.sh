@@ -2,8 +2,8 @@
 # Renders the comparison scenes into docs/scenes/ (PNG previews and JSON summaries
 # committed; EXRs kept out of git) and measures VRL gathers per second with 1 and 2
 # threads, and writes the README's gallery (docs/scenes/gallery.png).
-# Usage: tools/render_scenes.sh [seconds per scene, default 60; bidirectional x4, room x6, corner x9, cloud x2,
-# fog x8] [size, default 192]
+# Usage: tools/render_scenes.sh [seconds per scene, default 60; bidirectional x4, room x12, corner x9,
+# cloud x2, fog x8] [size, default 192]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_SCENE=${1:-60}
@@ -16,8 +16,8 @@ mkdir -p "$OUT"
 common=(--width "$SIZE" --height "$SIZE" --vrls 64 --seed 1 --sampler cauchy-sum --quiet)
 # Scenes whose path-traced parts converge slowly (room, corner), whose passes are long (fog) or
 # whose VRLs are the whole image (bidirectional, cloud) get a multiple of the time, so that no
-# preview shows speckle or a single VRL's streak at its published size (about 33 minutes).
-declare -A factor=([bidirectional]=4 [room]=6 [corner]=9 [cloud]=2 [fog]=8)
+# preview shows speckle or a single VRL's streak at its published size (about 45 minutes).
+declare -A factor=([bidirectional]=4 [room]=12 [corner]=9 [cloud]=2 [fog]=8)
 for scene in bidirectional room cube corner cloud fog; do
   "$BIN" --scene "$scene" "${common[@]}" --time $((SECONDS_PER_SCENE * ${factor[$scene]:-1})) \
     --out "$OUT/$scene.exr" >/dev/null

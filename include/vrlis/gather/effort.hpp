@@ -65,7 +65,6 @@ struct EffortSettings {
   bool decide = true;
 };
 
-
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
 // moments (w x bound)^2, summed over the samples taken with their effort weights 1 / q (an
 // unbiased estimate of their sum over the gathers considered, as the renderer's own sum
