@@ -2,18 +2,41 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vrlis::integration {
 
-EffortPrice::EffortPrice(int width, int height)
+namespace {
+
+// A timed pixel's stats with their seconds weighted by w (an untimed pixel's are 0).
+EffortStats WeighSeconds(EffortStats s, double w) {
+  s.seconds *= w, s.sample_seconds *= w;
+  s.rule_seconds *= w, s.cheapest_seconds *= w, s.mixture_seconds *= w;
+  return s;
+}
+RemainderStats WeighSeconds(RemainderStats s, double w) {
+  s.seconds *= w;
+  return s;
+}
+
+}  // namespace
+
+EffortPrice::EffortPrice(int width, int height, double timed_share)
     : width_(width),
       height_(height),
+      timed_share_(timed_share),
       pixels_(static_cast<std::size_t>(width) * height),
       tiles_x_((width + kTile - 1) / kTile) {
   for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_);
   const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * ((height + kTile - 1) / kTile);
-  for (auto& kind : tiles_) kind.resize(tiles);
+  for (int kind = 0; kind < 2; ++kind) {
+    tiles_[kind].resize(tiles);
+    call_demand_[kind].assign(tiles, 1.0);
+    for (auto& part : pass_tiles_[kind]) part.resize(tiles);
+  }
   remainder_tiles_.resize(tiles);
+  remainder_demand_.assign(tiles, 1.0);
+  pass_remainder_.resize(tiles);
 }
 
 EffortPrice::PixelStats& EffortPrice::BeginPass() {
@@ -25,33 +48,48 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
   const std::vector<EffortStats>& medium = pass_.medium;
   const std::vector<EffortStats>& surface = pass_.surface;
   const std::vector<RemainderStats>& remainder = pass_.remainder;
-  for (std::size_t i = 0; i < pixels_; ++i) {
-    remainder_ += remainder[i];
-    remainder_tiles_[Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += remainder[i];
-  }
   Passes& into = passes_of_[passes_ >= kMinPasses];
   const std::vector<EffortStats>* stats[2] = {&medium, &surface};
-  EffortStats total[2];
-  for (int kind = 0; kind < 2; ++kind)
-    for (std::size_t i = 0; i < pixels_; ++i) {
+  // Each pixel's stats added once, into its tile's sums of the pass (a pass's adds are a
+  // sizeable part of a short pass, and they run on one thread); the tiles' into the rest.
+  for (std::size_t i = 0; i < pixels_; ++i) {
+    const std::size_t tile = Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_);
+    pass_remainder_[tile] += remainder[i];
+    for (int kind = 0; kind < 2; ++kind) {
       const EffortStats& p = (*stats[kind])[i];
-      total[kind] += p;
-      tiles_[kind][Tile(static_cast<int>(i) % width_, static_cast<int>(i) / width_)] += p;
-      into.switchable[kind] += p.rule_samples + p.cheapest_samples + p.mixture_samples;
-      into.cheapest[kind] += p.cheapest_samples, into.mixture[kind] += p.mixture_samples;
+      const bool decided = price_[kind] > 0 && p.decided > 0;  // the first pass takes every gather once
+      pass_tiles_[kind][decided][tile] += p;
       if (!(p.calls > 0)) continue;
       ++into.called[kind];
-      if (!(price_[kind] > 0)) continue;  // the first pass takes every gather once
-      if (p.decided > 0) ++into.decided[kind];
-      (p.decided > 0 ? decided_ : undecided_)[kind] += p;
+      if (decided) ++into.decided[kind];
     }
+  }
+  const double timing = 1 / timing_rate();  // of this pass's timed pixels' seconds
+  EffortStats total[2];
+  for (std::size_t tile = 0; tile < pass_remainder_.size(); ++tile) {
+    const RemainderStats r = WeighSeconds(std::exchange(pass_remainder_[tile], {}), timing);
+    remainder_ += r;
+    remainder_tiles_[tile] += r;
+    for (int kind = 0; kind < 2; ++kind)
+      for (int decided = 0; decided < 2; ++decided) {
+        const EffortStats p = WeighSeconds(std::exchange(pass_tiles_[kind][decided][tile], {}), timing);
+        total[kind] += p;
+        tiles_[kind][tile] += p;
+        if (price_[kind] > 0) (decided ? decided_ : undecided_)[kind] += p;
+      }
+  }
+  for (int kind = 0; kind < 2; ++kind) {
+    const EffortStats& t = total[kind];
+    into.switchable[kind] += t.rule_samples + t.cheapest_samples + t.mixture_samples;
+    into.cheapest[kind] += t.cheapest_samples, into.mixture[kind] += t.mixture_samples;
+  }
   for (std::size_t i = 0; i < pixels_; ++i) {
     const double v = std::sqrt(pass.pixels[i].MeanSquare());
     if (!std::isfinite(v)) continue;
     into.sum[i] += v;
     into.sum_sq[i] += v * v;
   }
-  into.pixel_seconds += pixel_seconds;
+  into.pixel_seconds += timing * pixel_seconds;
   ++into.count;
   for (int kind = 0; kind < 2; ++kind) {
     gathers_[kind] += total[kind];
@@ -103,10 +141,16 @@ void EffortPrice::Refresh() {
                        ? calibration * pixel_cost / (variance * gather_cost)
                        : 0;
   }
+  for (int kind = 0; kind < 2; ++kind) {
+    model_[kind] = Model(kind);
+    decisions_pay_[kind] = DecisionsPay(kind);
+    for (std::size_t tile = 0; tile < call_demand_[kind].size(); ++tile) call_demand_[kind][tile] = CallDemand(kind, tile);
+  }
+  for (std::size_t tile = 0; tile < remainder_demand_.size(); ++tile) remainder_demand_[tile] = RemainderDemand(tile);
 }
 
-double EffortPrice::remainder_demand(int x, int y) const {
-  const RemainderStats& tile = remainder_tiles_[Tile(x, y)];
+double EffortPrice::RemainderDemand(std::size_t t) const {
+  const RemainderStats& tile = remainder_tiles_[t];
   constexpr double kFewPaths = 16;  // below which a tile's cost is too noisy
   const RemainderStats& timed = tile.paths >= kFewPaths ? tile : remainder_;
   const double cost = timed.paths > 0 ? timed.seconds / timed.paths : 0;
@@ -114,13 +158,8 @@ double EffortPrice::remainder_demand(int x, int y) const {
   return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
 }
 
-vrlis::EffortModel EffortPrice::model(GatherKind kind, double u) const {
+vrlis::EffortModel EffortPrice::Model(int k) const {
   using vrlis::EffortModel;
-  if (passes_ < kMinPasses) {
-    if (u < kPilot) return EffortModel::Cheapest;
-    return u < 2 * kPilot ? EffortModel::Mixture : EffortModel::Chosen;
-  }
-  const int k = static_cast<int>(kind);
   const EffortStats& all = gathers_[k];
   const Passes& p = measured();
   const double switchable = p.switchable[k];
@@ -155,15 +194,10 @@ vrlis::EffortModel EffortPrice::model(GatherKind kind, double u) const {
   double least = v_rule * t_rule;
   for (const Change& c : alternatives)
     if (c.known && (v_rule + c.dv) * (t_rule + c.dt) < least) least = (v_rule + c.dv) * (t_rule + c.dt), best = c.model;
-  return u < kExplore ? EffortModel::Chosen : best;
+  return best;
 }
 
-bool EffortPrice::measure_mixture(GatherKind kind, double u) const {
-  return u < kMeasure || model(kind, 1.0) == vrlis::EffortModel::Mixture;
-}
-
-bool EffortPrice::decide(GatherKind kind, double u) const {
-  const int k = static_cast<int>(kind);
+bool EffortPrice::DecisionsPay(int k) const {
   const EffortStats& d = decided_[k];
   const EffortStats& once = undecided_[k];
   const double decided_pixels = passes_of_[1].decided[k];  // the pixels in decided_
@@ -180,20 +214,20 @@ bool EffortPrice::decide(GatherKind kind, double u) const {
   const double seconds = (d.seconds - d.sample_seconds) - d.vrls * loop + (double(d.gathers) - d.vrls) * sample_cost;
   const Passes& p = measured();
   const double scale = p.called[k] / (p.count * double(pixels_)) / decided_pixels;
-  const double dv = scale * (d.roulette_excess + within(kind) * d.split_excess), dt = scale * seconds;
+  const double dv = scale * (d.roulette_excess + within(GatherKind(k)) * d.split_excess), dt = scale * seconds;
   // The measured variance and cost are of a mixture, the decided share of the pixels with
   // the decisions' change, the rest without: the two states' products compared whole, not
   // to first order (turning the decisions off is no small change).
   const double decided_share = p.called[k] > 0 ? p.decided[k] / p.called[k] : 0;
   const double v_once = variance_ - decided_share * dv, t_once = pixel_cost_ - decided_share * dt;
-  if (!(v_once > 0)) return true;          // the variance they add estimated above the whole: keep them
-  if (!(t_once > 0)) return u < kExplore;  // the time they take estimated above the whole
-  return (v_once + dv) * (t_once + dt) < v_once * t_once || u < kExplore;
+  if (!(v_once > 0)) return true;   // the variance they add estimated above the whole: keep them
+  if (!(t_once > 0)) return false;  // the time they take estimated above the whole
+  return (v_once + dv) * (t_once + dt) < v_once * t_once;
 }
 
-double EffortPrice::call_demand(GatherKind kind, int x, int y) const {
-  const EffortStats& tile = tiles_[static_cast<int>(kind)][Tile(x, y)];
-  const EffortStats& all = gathers_[static_cast<int>(kind)];
+double EffortPrice::CallDemand(int kind, std::size_t t) const {
+  const EffortStats& tile = tiles_[kind][t];
+  const EffortStats& all = gathers_[kind];
   // A taken call's decisions: their time is what a call not taken saves.
   auto decisions = [](const EffortStats& s) { return (s.seconds - s.sample_seconds) / s.call_rate; };
   constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy

@@ -91,9 +91,10 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path
     const double rate = demand > 1 ? std::min(demand, std::max(1.0, effort.ceiling)) : 1.0;
-    auto p0 = std::chrono::steady_clock::now();
+    m.timed = s.timed = price_.timed(choice.Uniform());
+    const auto p0 = m.timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate);
-    pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
+    if (m.timed) pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
     learned->medium[i] = count.medium_effort;

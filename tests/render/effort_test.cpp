@@ -24,6 +24,9 @@
 // - the gathers are decided one by one where that pays and taken once where it does not: in
 //   room (decisions skip almost every gather), not in the bidirectional scene at g = 0 with
 //   equiangular sampling (bounds that cost more than the gathers, for little variance);
+// - timing an eighth of the pixels prices as timing them all: on synthetic passes whose
+//   seconds the price sets against the first pass's, the two prices agree within 10%; the
+//   eighth without its weight 8 is rejected;
 // - the controlled image's mean is the uncontrolled one's: per 8 x 8 block of the
 //   bidirectional scene (where roulette and splitting act most), of room (where whole calls
 //   are rouletted) and of the cube (where the remainder is split), z-scores within a
@@ -192,7 +195,7 @@ TEST_CASE("effort: a split remainder keeps its mean and learns its second moment
   vrlis::integration::RemainderStats stats;
   vrlis::RunningMoments kept, sabotaged;
   for (int k = 0; k < 40000; ++k) {
-    const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, [&] {
+    const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, true, [&] {
       return vrlis::integration::Spectrum(rng.Uniform());
     }).Average();
     kept.add(y);
@@ -252,7 +255,7 @@ TEST_CASE("effort: the price takes the model whose variance x time is least", "[
   using vrlis::integration::EffortStats;
   auto model = [](double excess) {
     constexpr int kSide = 8;
-    vrlis::integration::EffortPrice price(kSide, kSide);
+    vrlis::integration::EffortPrice price(kSide, kSide, 1.0);  // every pixel timed
     for (int pass = 0; pass < 5; ++pass) {
       auto& pixels = price.BeginPass();
       for (std::size_t i = 0; i < pixels.medium.size(); ++i) {
@@ -291,4 +294,41 @@ TEST_CASE("effort: gathers are decided one by one only where the decisions pay",
   };
   CHECK(decide("room", 0.5f, "equiangular"));
   CHECK_FALSE(decide("bidirectional", 0.f, "equiangular"));
+}
+
+TEST_CASE("effort: timing a share of the pixels prices as timing them all", "[render][effort]") {
+  // Pixels of random cost whose gathers take all of it, no sampling seconds: the price is the
+  // later passes' pixel cost over the first pass's gather cost, so a later pass's seconds
+  // must keep their sum whichever share of the pixels measured them.
+  constexpr int kSide = 64;
+  using vrlis::integration::EffortPrice;
+  EffortPrice all(kSide, kSide, 1.0), share(kSide, kSide, EffortPrice::kTimed), unweighted(kSide, kSide, 1.0);
+  vrlis::integration::Rng rng(3, 0, 0, vrlis::integration::StreamPurpose::Camera);
+  for (int pass = 0; pass < 6; ++pass) {
+    double seconds[3] = {0, 0, 0};
+    EffortPrice::PixelStats* pixels[3] = {&all.BeginPass(), &share.BeginPass(), &unweighted.BeginPass()};
+    for (std::size_t i = 0; i < pixels[0]->medium.size(); ++i) {
+      vrlis::integration::EffortStats p;
+      p.calls = 1, p.gathers = 10, p.predicted = p.measured = 1;
+      const double cost = 5e-6 * (0.5 + rng.Uniform());
+      const bool timed = share.timed(rng.Uniform());  // the same pixels for the share and its sabotage
+      for (int k = 0; k < 3; ++k) {
+        vrlis::integration::EffortStats q = p;
+        q.seconds = k == 0 || timed ? cost : 0;
+        seconds[k] += q.seconds;
+        pixels[k]->medium[i] = q;
+        pixels[k]->surface[i] = {};
+        pixels[k]->remainder[i] = {};
+      }
+    }
+    vrlis::integration::Film film(kSide, kSide);
+    for (auto& v : film.pixels) v = vrlis::integration::Spectrum(0.9f + 0.2f * rng.Uniform());
+    all.Add(film, seconds[0]), share.Add(film, seconds[1]), unweighted.Add(film, seconds[2]);
+  }
+  auto price = [](const EffortPrice& p) { return p.price(vrlis::integration::GatherKind::Medium); };
+  INFO("price: every pixel timed " << price(all) << ", an eighth " << price(share) << ", unweighted "
+                                   << price(unweighted));
+  REQUIRE(price(all) > 0);
+  CHECK(std::abs(price(share) / price(all) - 1) < 0.1);
+  CHECK_FALSE(std::abs(price(unweighted) / price(all) - 1) < 0.1);
 }

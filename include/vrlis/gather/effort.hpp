@@ -63,6 +63,10 @@ struct EffortSettings {
   // `model` alone; the renderer's choice from earlier passes where the decisions cost more
   // time than the variance they save is worth (docs/maths.md#effort-decide).
   bool decide = true;
+  // Whether the call measures its seconds (EffortTally). A clock read costs a tenth of an
+  // equiangular gather, so a renderer may time a random share of its calls and weigh their
+  // seconds by the inverse of that share.
+  bool timed = true;
 };
 
 // What the renderer needs to calibrate its predictions from a pass: the predicted second
@@ -72,7 +76,7 @@ struct EffortSettings {
 // (effort weight x contribution^2), visibility included, estimates the true one: their ratio,
 // learned from earlier passes, scales the price (a bound is not a second moment).
 // `sample_seconds` is the time spent sampling and connecting the samples: the rest of a call's
-// time is its decisions' (docs/maths.md#effort-calls).
+// time is its decisions' (docs/maths.md#effort-calls); 0 unless EffortSettings::timed.
 struct EffortTally {
   double predicted = 0;
   double sample_seconds = 0;

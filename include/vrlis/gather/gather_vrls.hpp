@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 
 #include "effort.hpp"
@@ -57,18 +58,25 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   const double rate = EffortCallRate(effort);
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
   using Batch = GatherBatch<Real, kUniforms>;
-  Batch batches[kPolicy ? kEffortModels : 1];  // by EffortModel (built after the call's roulette: they are zeroed)
+  // By EffortModel, each built when first used (they are zeroed, and a call uses one or two).
+  std::optional<Batch> batches[kPolicy ? kEffortModels : 1];
+  auto batch_of = [&](EffortModel model) -> Batch& {
+    std::optional<Batch>& batch = batches[static_cast<int>(model)];
+    if (!batch) batch.emplace();
+    return *batch;
+  };
+  const bool timed = tally && effort.timed;
   auto run = [&](EffortModel model) {
-    const auto start = tally ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    Batch& batch = batches[static_cast<int>(model)];
+    const auto start = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    Batch& batch = *batches[static_cast<int>(model)];
     GatherSample<Real> samples[Batch::kSize];
     gather(model, batch, samples);
     for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
-    if (tally) {
+    if (tally) tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
+    if (timed) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       tally->sample_seconds += seconds;
       tally->model_seconds[static_cast<int>(model)] += seconds;
-      tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
     }
     batch.count = 0;
   };
@@ -98,7 +106,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
       weight = n > 0 ? Real(1 / q) : Real(0);
       if (tally && n > 0) tally->predicted += n * predicted() / q;
     }
-    Batch& batch = batches[static_cast<int>(model)];
+    Batch& batch = batch_of(model);
     for (int j = 0; j < n; ++j) {
       Real u[kUniforms];
       for (Real& x : u) x = uniform();
@@ -112,14 +120,15 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     if (!decide && (i + 1) % Batch::kSize == 0 && batch.count > 0) run(model);
   }
   for (int m = 0; m < (kPolicy ? kEffortModels : 1); ++m)
-    if (batches[m].count > 0) run(EffortModel(m));
+    if (batches[m] && batches[m]->count > 0) run(EffortModel(m));
 }
 
 }  // namespace detail
 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
-// tally, if set, adds the predictions (decided gathers only) and the seconds of sampling.
+// tally, if set, adds the predictions (decided gathers only) and, in a timed call
+// (EffortSettings::timed), the seconds of sampling.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
                       const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,

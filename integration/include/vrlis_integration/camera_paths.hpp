@@ -45,12 +45,12 @@ class Timer {
 
 // The remainder's paths from one camera vertex: EffortSamples(rate) of them (one, and no
 // number drawn, at rate 1), each weighted 1 / rate, so the sum keeps its mean whatever the
-// rate; `stats`, if set, adds what the price learns from (docs/maths.md#effort-remainder).
-// `path` returns one path's contribution.
+// rate; `stats`, if set, adds what the price learns from (docs/maths.md#effort-remainder),
+// its seconds only if `timed`. `path` returns one path's contribution.
 template <typename Path>
-Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, Path&& path) {
+Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, bool timed, Path&& path) {
   if (rate == 1 && !stats) return path();
-  detail::Timer timer(stats != nullptr, stats ? &stats->seconds : nullptr);
+  detail::Timer timer(stats && timed, stats ? &stats->seconds : nullptr);
   const int n = rate == 1 ? 1 : vrlis::EffortSamples(rate, rng.Uniform());
   Spectrum sum;
   for (int i = 0; i < n; ++i) {

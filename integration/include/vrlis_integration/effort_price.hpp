@@ -80,7 +80,9 @@ class EffortPrice {
   static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
 
   EffortPrice() = default;
-  EffortPrice(int width, int height);
+  // timed_share: the share of pixels that measure their seconds after the first kMinPasses
+  // passes (timed()).
+  EffortPrice(int width, int height, double timed_share = kTimed);
 
   // What each pixel's medium-to-medium and medium-to-surface gathers and its remainder tell
   // in the current pass, filled by the renderer. Kept with the price: allocated and zeroed
@@ -92,9 +94,18 @@ class EffortPrice {
   // The current pass's PixelStats, one per pixel, each to be overwritten by the pass (not
   // zeroed: at 48 x 48 that memset was a few percent of an equiangular pass).
   PixelStats& BeginPass();
-  // One finished pass: its image, the seconds its pixels took (summed over threads) and the
-  // PixelStats of BeginPass.
+  // Whether a pixel measures its seconds in this pass (vrlis::EffortSettings::timed), u
+  // uniform in [0, 1) drawn for the pixel: in the first kMinPasses passes always, after them
+  // with probability timed_share (a clock read costs a tenth of an equiangular gather, and a
+  // pixel reads several); Add weighs the timed pixels' seconds by the inverse of that
+  // probability, so every sum of seconds keeps its mean.
+  bool timed(double u) const { return u < timing_rate(); }
+  static constexpr double kTimed = 1.0 / 8;
+  // One finished pass: its image, the seconds its timed pixels took (summed over threads) and
+  // the PixelStats of BeginPass.
   void Add(const Film& pass, double pixel_seconds);
+  // The decisions below are made once per pass, when Add refreshes the price: a pixel only
+  // reads them.
   // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
   // second moments), in 1 / (predicted second moment); 0 before kMinPasses passes (every
   // gather taken once).
@@ -109,12 +120,14 @@ class EffortPrice {
   // sqrt((second moment / decision seconds of a taken call) x (pixel cost / pixel variance)),
   // both from the earlier calls of the pixel's tile (the seconds from the kind's calls while
   // the tile has taken few); 1 before kMinPasses passes.
-  double call_demand(GatherKind kind, int x, int y) const;
+  double call_demand(GatherKind kind, int x, int y) const {
+    return call_demand_[static_cast<int>(kind)][Tile(x, y)];
+  }
   // The paths the remainder asks for at a camera vertex of pixel (x, y), EARS's splitting
   // factor: sqrt((second moment / seconds of one path) x (pixel cost / pixel variance)) from
   // the earlier paths of the pixel's tile (the seconds of all paths while the tile has traced
   // few); 1 before a price is learned.
-  double remainder_demand(int x, int y) const;
+  double remainder_demand(int x, int y) const { return remainder_demand_[Tile(x, y)]; }
   // The model of `auto`'s gathers of this kind at a pixel in this pass
   // (vrlis::EffortSettings::model), u uniform in [0, 1) drawn for the pixel: of the rule, the
   // cheapest model and the mixture, the one whose variance over the rule's (estimated over
@@ -122,23 +135,37 @@ class EffortPrice {
   // or costs (docs/maths.md#effort-cheapest); where that is not the rule, the rule with
   // probability kExplore, which keeps the estimates learning. Before any price, the cheapest
   // model and the mixture each with probability kPilot (their seconds are measured once).
-  vrlis::EffortModel model(GatherKind kind, double u) const;
+  vrlis::EffortModel model(GatherKind kind, double u) const {
+    if (passes_ < kMinPasses) return u < kPilot ? vrlis::EffortModel::Cheapest
+                                     : u < 2 * kPilot ? vrlis::EffortModel::Mixture : vrlis::EffortModel::Chosen;
+    return u < kExplore ? vrlis::EffortModel::Chosen : model_[static_cast<int>(kind)];
+  }
   // Whether a pixel whose gathers of this kind take the rule also measures the mixture's
   // density at its samples (vrlis::EffortSettings::measure_mixture), u uniform in [0, 1):
-  // always where the image takes the mixture (the rule's exploring samples are then its only
-  // estimate), else with probability kMeasure (a mixture fit per sample is not free).
-  bool measure_mixture(GatherKind kind, double u) const;
-  static constexpr double kExplore = 1.0 / 32, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
+  // always where the image takes another model (the rule's few exploring samples are then
+  // the only estimate of either alternative), else with probability kMeasure (a mixture fit
+  // per sample is not free).
+  bool measure_mixture(GatherKind kind, double u) const {
+    return u < kMeasure || model_[static_cast<int>(kind)] != vrlis::EffortModel::Chosen;
+  }
+  static constexpr double kExplore = 1.0 / 128, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
   // Whether a pixel's gathers of this kind are decided one by one in this pass
   // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
   // image's earlier decided calls, the decisions' seconds exceed what the variance they save
   // is worth (docs/maths.md#effort-decide), with probability kExplore; elsewhere, and before
   // any decided call, always.
-  bool decide(GatherKind kind, double u) const;
+  bool decide(GatherKind kind, double u) const { return decisions_pay_[static_cast<int>(kind)] || u < kExplore; }
   int passes() const { return passes_; }
 
  private:
   void Refresh();
+  // What Refresh decides for the next pass: per kind, the image's model and whether the
+  // decisions pay, per kind and tile the call demand, per tile the remainder's.
+  vrlis::EffortModel Model(int kind) const;
+  bool DecisionsPay(int kind) const;
+  double CallDemand(int kind, std::size_t tile) const;
+  double RemainderDemand(std::size_t tile) const;
+  double timing_rate() const { return passes_ < kMinPasses ? 1 : timed_share_; }
   std::size_t Tile(int x, int y) const {
     return static_cast<std::size_t>(y / kTile) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(x / kTile);
   }
@@ -155,6 +182,7 @@ class EffortPrice {
     double switchable[2] = {0, 0}, cheapest[2] = {0, 0}, mixture[2] = {0, 0};
   };
   int width_ = 0, height_ = 0, passes_ = 0;
+  double timed_share_ = kTimed;
   std::size_t pixels_ = 0;
   Passes passes_of_[2];
   // The variance and cost of a pixel per pass, of the estimator the decisions made.
@@ -170,6 +198,13 @@ class EffortPrice {
   EffortStats controlled_[2];    // of the passes after
   EffortStats decided_[2], undecided_[2];  // of those passes' pixels that decided their gathers, and the rest
   double price_[2] = {0, 0};
+  vrlis::EffortModel model_[2] = {vrlis::EffortModel::Chosen, vrlis::EffortModel::Chosen};
+  bool decisions_pay_[2] = {true, true};
+  std::vector<double> call_demand_[2], remainder_demand_;
+  // This pass's stats summed per tile and kind, of the pixels that decided their gathers under a
+  // price and of the rest (Add).
+  std::vector<EffortStats> pass_tiles_[2][2];
+  std::vector<RemainderStats> pass_remainder_;
   std::vector<RemainderStats> remainder_tiles_;
   RemainderStats remainder_;
   PixelStats pass_;
