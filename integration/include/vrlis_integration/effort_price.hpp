@@ -152,9 +152,15 @@ class EffortPrice {
   // Whether a pixel's gathers of this kind are decided one by one in this pass
   // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
   // image's earlier decided calls, the decisions' seconds exceed what the variance they save
-  // is worth (docs/maths.md#effort-decide), with probability kExplore; elsewhere, and before
-  // any decided call, always.
-  bool decide(GatherKind kind, double u) const { return decisions_pay_[static_cast<int>(kind)] || u < kExplore; }
+  // is worth (docs/maths.md#effort-decide), with probability kExplore; elsewhere always.
+  // Before any price, with probability kCalibrate: unpriced, a decided gather is taken once as
+  // any other, and only its bounds, which calibrate the first price, cost (the tight one about
+  // half a gather).
+  bool decide(GatherKind kind, double u) const {
+    if (passes_ < kMinPasses) return u < kCalibrate;
+    return decisions_pay_[static_cast<int>(kind)] || u < kExplore;
+  }
+  static constexpr double kCalibrate = 1.0 / 8;
   int passes() const { return passes_; }
 
  private:
