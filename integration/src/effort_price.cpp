@@ -57,9 +57,9 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
     pass_remainder_[tile] += remainder[i];
     for (int kind = 0; kind < 2; ++kind) {
       const EffortStats& p = (*stats[kind])[i];
+      if (!(p.calls > 0)) continue;  // then every field is 0
       const bool decided = price_[kind] > 0 && p.decided > 0;  // the first pass takes every gather once
       pass_tiles_[kind][decided][tile] += p;
-      if (!(p.calls > 0)) continue;
       ++into.called[kind];
       if (decided) ++into.decided[kind];
     }
