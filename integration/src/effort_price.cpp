@@ -161,15 +161,20 @@ double EffortPrice::RemainderDemand(std::size_t t) const {
 vrlis::EffortModel EffortPrice::Model(int k) const {
   using vrlis::EffortModel;
   const EffortStats& all = gathers_[k];
+  // The models' seconds per sample from the first passes only, where each took every gather
+  // once in whole batches: a controlled pass takes the image's model in the small batches
+  // roulette leaves, at a higher cost per sample that the others, not taken, never show.
+  const EffortStats& pilot = uncontrolled_[k];
   const Passes& p = measured();
   const double switchable = p.switchable[k];
-  if (!(all.rule_samples > all.mixture_measured && switchable > 0 && variance_ > 0 && pixel_cost_ > 0))
+  if (!(all.rule_samples > all.mixture_measured && pilot.rule_samples > pilot.mixture_measured && switchable > 0 &&
+        variance_ > 0 && pixel_cost_ > 0))
     return EffortModel::Chosen;
   // Per pixel and pass, what a model changes against the rule were every sample below the
   // accurate tier taken with it: the variance it adds (estimated from the rule's samples) and
   // its seconds over the rule's; and its share of those samples in the measured passes.
   const double samples = switchable / (p.count * double(pixels_));
-  const double rule_seconds = all.rule_seconds / (all.rule_samples - all.mixture_measured);
+  const double rule_seconds = pilot.rule_seconds / (pilot.rule_samples - pilot.mixture_measured);
   struct Change {
     EffortModel model;
     double dv = 0, dt = 0, share = 0;
@@ -180,9 +185,9 @@ vrlis::EffortModel EffortPrice::Model(int k) const {
     return Change{m, samples * excess / measured, samples * (seconds / taken - rule_seconds), share, true};
   };
   const Change alternatives[] = {
-      change(EffortModel::Cheapest, all.cheapest_excess, all.rule_samples, all.cheapest_samples, all.cheapest_seconds,
+      change(EffortModel::Cheapest, all.cheapest_excess, all.rule_samples, pilot.cheapest_samples, pilot.cheapest_seconds,
              p.cheapest[k] / switchable),
-      change(EffortModel::Mixture, all.mixture_excess, all.mixture_measured, all.mixture_samples, all.mixture_seconds,
+      change(EffortModel::Mixture, all.mixture_excess, all.mixture_measured, pilot.mixture_samples, pilot.mixture_seconds,
              p.mixture[k] / switchable)};
   // The measured variance and cost are of a mix, each model's share of the samples with its
   // change and the rest with the rule's: the states compared whole, not to first order (one

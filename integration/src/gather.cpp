@@ -66,13 +66,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
-    float weights[kChunk];
-    int samples[kChunk] = {};
-    double sum_y[kChunk] = {}, sum_y2[kChunk] = {};  // per VRL, of its samples' unweighted contributions
-    for (int i = 0; i < n; ++i) {
-      segments[i] = SegmentOf(chunk[i]);
-      weights[i] = (throughput * chunk[i].flux).Rms();
-    }
+    float weights[kChunk];  // read by the effort control only
+    int samples[kChunk];
+    double sum_y[kChunk], sum_y2[kChunk];  // per VRL, of its samples' unweighted contributions; with stats only
+    for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]);
+    if (effort.on)
+      for (int i = 0; i < n; ++i) weights[i] = (throughput * chunk[i].flux).Rms();
+    if (stats)
+      for (int i = 0; i < n; ++i) samples[i] = 0, sum_y[i] = sum_y2[i] = 0;
     auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
       Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
       sum += x;

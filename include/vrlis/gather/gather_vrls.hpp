@@ -66,10 +66,10 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     return *batch;
   };
   const bool timed = tally && effort.timed;
+  GatherSample<Real> samples[Batch::kSize];  // once per call: every batch overwrites them
   auto run = [&](EffortModel model) {
     const auto start = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Batch& batch = *batches[static_cast<int>(model)];
-    GatherSample<Real> samples[Batch::kSize];
     gather(model, batch, samples);
     for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
     if (tally) tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
