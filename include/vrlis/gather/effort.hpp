@@ -63,8 +63,8 @@ struct EffortSettings {
   // `model` alone; the renderer's choice from earlier passes where the decisions cost more
   // time than the variance they save is worth (docs/maths.md#effort-decide).
   bool decide = true;
-  // Whether the call measures its seconds (EffortTally). A clock read costs a tenth of an
-  // equiangular gather, so a renderer may time a random share of its calls and weigh their
+  // Whether the call measures its seconds (EffortTally). A clock read is a sizeable part of
+  // an equiangular gather, so a renderer may time a random share of its calls and weigh their
   // seconds by the inverse of that share.
   bool timed = true;
 };

@@ -96,11 +96,12 @@ class EffortPrice {
   PixelStats& BeginPass();
   // Whether a pixel measures its seconds in this pass (vrlis::EffortSettings::timed), u
   // uniform in [0, 1) drawn for the pixel: in the first kMinPasses passes always, after them
-  // with probability timed_share (a clock read costs a tenth of an equiangular gather, and a
-  // pixel reads several); Add weighs the timed pixels' seconds by the inverse of that
-  // probability, so every sum of seconds keeps its mean.
+  // with probability timed_share (a timed pixel reads the clock several times, each read a
+  // sizeable part of an equiangular gather); Add weighs the timed pixels' seconds by the
+  // inverse of that probability, so every sum of seconds keeps its mean. A small image times
+  // at least kTimedPixels a pass (fewer made its decisions flip with the clock's noise).
   bool timed(double u) const { return u < timing_rate(); }
-  static constexpr double kTimed = 1.0 / 8;
+  static constexpr double kTimed = 1.0 / 8, kTimedPixels = 512;
   // One finished pass: its image, the seconds its timed pixels took (summed over threads) and
   // the PixelStats of BeginPass.
   void Add(const Film& pass, double pixel_seconds);
@@ -171,7 +172,9 @@ class EffortPrice {
   bool DecisionsPay(int kind) const;
   double CallDemand(int kind, std::size_t tile) const;
   double RemainderDemand(std::size_t tile) const;
-  double timing_rate() const { return passes_ < kMinPasses ? 1 : timed_share_; }
+  double timing_rate() const {
+    return passes_ < kMinPasses ? 1 : std::min(1.0, std::max(timed_share_, kTimedPixels / double(pixels_)));
+  }
   std::size_t Tile(int x, int y) const {
     return static_cast<std::size_t>(y / kTile) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(x / kTile);
   }
