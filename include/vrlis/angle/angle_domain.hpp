@@ -19,25 +19,63 @@ struct AnglePoint {
   Real t = 0, dtheta_dt = 0;
 };
 
+namespace detail {
+
+// The reduction's numbers for one point p (AngleDomain's members).
+template <typename Real>
+struct AngleFrame {
+  Real u0, h, tan_a, stretch, width;
+  Vec3<Real> n;
+  bool on_line;
+};
+
+// atan(b) - atan(a) with b - a = db >= 0 and tan_a = a, from the argument of (1 + i b)(1 - i a).
+template <typename Real>
+[[gnu::always_inline]] inline Real OffsetOfSlope(Real tan_a, Real db, Real b) {
+  return Atan2Lanes(db, 1 + tan_a * b);
+}
+
+// With kLanes branch-free (every case computed, then picked), so that a loop over points
+// (VrlMarginal's nodes) vectorises; otherwise each case is computed only where taken.
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline AngleFrame<Real> ReduceToAngles(const Vec3<Real>& point, const Vec3<Real>& origin,
+                                                              const Vec3<Real>& dir, Real tmin, Real tmax) {
+  AngleFrame<Real> f;
+  Vec3<Real> d = point - origin;
+  f.u0 = Dot(d, dir);
+  Vec3<Real> perp = d - f.u0 * dir;
+  Real h = PickSqrt<kLanes>(Dot(perp, perp));
+  bool bounded = std::abs(tmax) < std::numeric_limits<Real>::infinity();
+  Real scale = std::abs(d.x) + std::abs(d.y) + std::abs(d.z) + std::abs(tmin) + Pick<kLanes>(bounded, std::abs(tmax), Real(0));
+  Real floor = NoiseFloor(scale);
+  // On (or within rounding of) the line the plane is arbitrary; any normal will do.
+  f.on_line = !(h > floor);
+  Real inv_h = Real(1) / h;
+  if constexpr (kLanes) {
+    Vec3<Real> any = AnyPerpendicular(dir);
+    f.n = {SelectLanes(f.on_line, any.x, inv_h * perp.x), SelectLanes(f.on_line, any.y, inv_h * perp.y),
+           SelectLanes(f.on_line, any.z, inv_h * perp.z)};
+  } else {
+    f.n = f.on_line ? AnyPerpendicular(dir) : inv_h * perp;
+  }
+  f.h = h = Pick<kLanes>(h < floor, floor, h);
+  f.tan_a = (tmin - f.u0) / h;
+  f.stretch = h + (tmin - f.u0) * f.tan_a;  // h (1 + A^2), from two non-negative terms
+  if constexpr (kLanes) {
+    f.width = SelectLanes(bounded, OffsetOfSlope(f.tan_a, (tmax - tmin) / h, (tmax - f.u0) / h), Atan2Lanes(Real(1), f.tan_a));
+  } else {
+    f.width = bounded ? OffsetOfSlope(f.tan_a, (tmax - tmin) / h, (tmax - f.u0) / h) : Atan2Lanes(Real(1), f.tan_a);
+  }
+  return f;
+}
+
+}  // namespace detail
+
 template <typename Real>
 class AngleDomain {
  public:
-  explicit AngleDomain(const SegmentQuery<Real>& q) : tmin_(q.tmin), tmax_(q.tmax) {
-    Vec3<Real> d = q.point - q.origin;
-    u0_ = Dot(d, q.dir);
-    Vec3<Real> perp = d - u0_ * q.dir;
-    h_ = Length(perp);
-    Real scale = std::abs(d.x) + std::abs(d.y) + std::abs(d.z) + std::abs(tmin_) + (std::isfinite(tmax_) ? std::abs(tmax_) : Real(0));
-    Real floor = NoiseFloor(scale);
-    // On (or within rounding of) the line the plane is arbitrary; any normal will do.
-    on_line_ = !(h_ > floor);
-    n_ = on_line_ ? AnyPerpendicular(q.dir) : (Real(1) / h_) * perp;
-    h_ = std::max(h_, floor);
-    tan_a_ = (tmin_ - u0_) / h_;
-    stretch_ = h_ + (tmin_ - u0_) * tan_a_;  // h (1 + A^2), from two non-negative terms
-    width_ = std::isfinite(tmax_) ? OffsetOfSlope((tmax_ - tmin_) / h_, (tmax_ - u0_) / h_)
-                                  : Atan2Lanes(Real(1), tan_a_);
-  }
+  explicit AngleDomain(const SegmentQuery<Real>& q)
+      : AngleDomain(q, detail::ReduceToAngles<false>(q.point, q.origin, q.dir, q.tmin, q.tmax)) {}
 
   Real tmin() const { return tmin_; }
   Real tmax() const { return tmax_; }
@@ -58,7 +96,7 @@ class AngleDomain {
     Real db = (t - tmin_) / h_, b = (t - u0_) / h_;
     // Beyond h * max<Real> the remaining angle atan(h / (t - u0)) is below 1 / max<Real>.
     if (!std::isfinite(db) || !std::isfinite(b)) return width_;
-    return OffsetOfSlope(db, b);
+    return detail::OffsetOfSlope(tan_a_, db, b);
   }
 
   // The inverse of offset_at: tan(theta_a + delta) written with the addition formula.
@@ -87,10 +125,12 @@ class AngleDomain {
   }
 
  private:
-  // atan(b) - atan(a) with b - a = db >= 0, from the argument of (1 + i b)(1 - i a).
-  Real OffsetOfSlope(Real db, Real b) const { return Atan2Lanes(db, 1 + tan_a_ * b); }
   // Samples must be finite even on an unbounded segment.
   Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
+
+  AngleDomain(const SegmentQuery<Real>& q, const detail::AngleFrame<Real>& f)
+      : tmin_(q.tmin), tmax_(q.tmax), u0_(f.u0), h_(f.h), tan_a_(f.tan_a), stretch_(f.stretch), width_(f.width),
+        n_(f.n), on_line_(f.on_line) {}
 
   Real tmin_, tmax_, u0_, h_, tan_a_, stretch_, width_;
   Vec3<Real> n_;

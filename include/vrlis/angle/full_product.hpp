@@ -17,6 +17,19 @@
 
 namespace vrlis {
 
+namespace detail {
+
+// The transmittance factor at the offset whose half angle has sine and cosine `half`:
+// pole = sin and cos of half the lower pole's offset, depth_scale = sigma_t h / pole.cos
+// (see above). Branch-free, for loops over offsets.
+template <typename Real>
+[[gnu::always_inline]] inline Real SegmentTransmittance(SinCosPair<Real> half, SinCosPair<Real> pole, Real depth_scale) {
+  Real cos_half = half.cos * pole.cos + half.sin * pole.sin;  // cos(x/2) by the subtraction formula
+  return ExpLanes(-depth_scale * half.sin / std::max(cos_half, Real(0)));
+}
+
+}  // namespace detail
+
 template <typename Real>
 class FullProductTarget {
  public:
@@ -45,11 +58,7 @@ class FullProductTarget {
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
     phase_.evaluate(delta, out);
     if (!(depth_scale_ > 0)) return;
-    for (std::size_t j = 0; j < N; ++j) {
-      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
-      Real cos_half = half.cos * pole_.cos + half.sin * pole_.sin;
-      out[j] *= ExpLanes(-depth_scale_ * half.sin / std::max(cos_half, Real(0)));
-    }
+    for (std::size_t j = 0; j < N; ++j) out[j] *= detail::SegmentTransmittance(SinCosLanes(delta[j] / 2), pole_, depth_scale_);
   }
 
   bool point_lobe_flat() const { return phase_.point_lobe_flat(); }

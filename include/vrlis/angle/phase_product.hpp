@@ -16,6 +16,74 @@
 
 namespace vrlis {
 
+namespace detail {
+
+// Offsets of theta = -pi/2 and +pi/2 from theta_a (tan_a = tan(theta_a)): the nearer pole's
+// is the small atan2, the other's pi minus it.
+template <typename Real>
+struct PoleOffsets {
+  Real lower, upper;
+};
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline PoleOffsets<Real> PolesOf(Real tan_a) {
+  Real near = Atan2Lanes(Real(1), std::abs(tan_a));
+  return {Pick<kLanes>(tan_a >= 0, near - kPi<Real>, -near), Pick<kLanes>(tan_a >= 0, near, kPi<Real> - near)};
+}
+
+// The point lobe's axis in the plane of the segment and p (normal n: from the segment
+// towards p): r, the length of its projection, 1 - r, and theta_e - theta_a, the angle of
+// the projection rotated back by theta_a. kLanes as ReduceToAngles.
+template <typename Real>
+struct LobeInPlane {
+  Real r, one_minus_r, theta_e;
+};
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline LobeInPlane<Real> ProjectLobe(const Vec3<Real>& axis, const Vec3<Real>& n,
+                                                            const Vec3<Real>& dir, Real tan_a, bool on_line) {
+  Real a = -Dot(axis, n), b = Dot(axis, dir), c = Dot(axis, Cross(dir, n));
+  // On the line the plane is arbitrary: keep only the part along the segment.
+  if constexpr (kLanes) {
+    c = SelectLanes(on_line, SqrtLanes(a * a + c * c), c);
+    a = SelectLanes(on_line, Real(0), a);
+  } else if (on_line) {
+    c = std::sqrt(a * a + c * c);
+    a = 0;
+  }
+  LobeInPlane<Real> out;
+  Real r = PickSqrt<kLanes>(a * a + b * b);
+  out.r = Pick<kLanes>(Real(1) < r, Real(1), r);
+  out.one_minus_r = c * c / (1 + out.r);  // 1 - r from the out-of-plane part: exact as r -> 1
+  out.theta_e = Atan2Lanes(b - tan_a * a, a + tan_a * b);
+  return out;
+}
+
+// One Henyey-Greenstein lobe as a function of the sines and cosines of delta / 2: K d^(-3/2)
+// with d = (1 - |g|)^2 + 2 |g| (1 - r) + 4 |g| r w^2, w the sine of its half angle from its
+// peak (r = 1 for the segment lobe), w = from_sin sin(delta / 2) + from_cos cos(delta / 2).
+template <typename Real>
+struct LobeShape {
+  Real from_sin = 0, from_cos = 0, base = 1, slope = 0, scale = kInvPi<Real> / 4;
+
+  // rotation: sin and cos of the lobe's half angle at delta = 0. The half angle from the
+  // peak is that one for g >= 0 and its complement for g < 0.
+  [[gnu::always_inline]] static LobeShape Of(Real g, Real r, Real one_minus_r, SinCosPair<Real> rotation) {
+    Real ag = std::abs(g);
+    LobeShape s;
+    s.from_sin = g >= 0 ? rotation.cos : rotation.sin;
+    s.from_cos = g >= 0 ? -rotation.sin : rotation.cos;
+    s.base = Sqr(1 - ag) + 2 * ag * one_minus_r;
+    s.slope = 4 * ag * r;
+    s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
+    return s;
+  }
+  [[gnu::always_inline]] Real operator()(SinCosPair<Real> half) const {
+    Real w = half.sin * from_sin + half.cos * from_cos, rw = RsqrtLanes(base + slope * w * w);
+    return scale * (rw * rw * rw);
+  }
+};
+
+}  // namespace detail
+
 template <typename Real>
 class PhaseProduct {
  public:
@@ -26,41 +94,30 @@ class PhaseProduct {
 
   PhaseProduct(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
       : g_(q.g), g_point_(q.lobe.g), kind_(q.lobe.kind), width_(dom.width()) {
-    // Offsets of theta = -pi/2 and +pi/2: the nearer pole's is the small atan2, the other's
-    // pi minus it. (Arctangents here and below are branch-free, and so is the choice: the
-    // octants and the side of the pole are random across queries.)
-    Real A = dom.tan_theta_a(), near = Atan2Lanes(Real(1), std::abs(A));
-    upper_ = A >= 0 ? near : kPi<Real> - near;
-    lower_ = A >= 0 ? near - kPi<Real> : -near;
+    // (Arctangents here are branch-free: the octants are random across queries.)
+    Real A = dom.tan_theta_a();
+    const detail::PoleOffsets<Real> poles = detail::PolesOf<false>(A);
+    lower_ = poles.lower;
+    upper_ = poles.upper;
     if (kind_ == LobeKind::None) return;
-    Vec3<Real> n = dom.normal();
-    Real a = -Dot(q.lobe.axis, n), b = Dot(q.lobe.axis, q.dir), c = Dot(q.lobe.axis, Cross(q.dir, n));
-    if (dom.on_line()) {  // the plane is arbitrary: keep only the part along the segment
-      c = std::sqrt(a * a + c * c);
-      a = 0;
-    }
-    r_ = std::min(std::sqrt(a * a + b * b), Real(1));
-    one_minus_r_ = c * c / (1 + r_);  // 1 - r from the out-of-plane part: exact as r -> 1
-    // theta_e - theta_a: the angle of (a, b) rotated back by theta_a.
-    theta_e_ = Atan2Lanes(b - A * a, a + A * b);
+    const detail::LobeInPlane<Real> lobe = detail::ProjectLobe<false>(q.lobe.axis, dom.normal(), q.dir, A, dom.on_line());
+    r_ = lobe.r;
+    one_minus_r_ = lobe.one_minus_r;
+    theta_e_ = lobe.theta_e;
   }
 
   // The product at every offset in `delta` (a fit's nodes), in a branch-free loop that
-  // compilers vectorise. A Henyey-Greenstein lobe is K d^(-3/2) with
-  // d = (1 - |g|)^2 + 2 |g| (1 - r) + 4 |g| r w^2, w the sine of its half angle from its peak
-  // (r = 1 for the segment lobe), a fixed combination of sin and cos of delta / 2; a clamped
-  // cosine is r cos(delta - theta_e) / pi, from the same pair by the double-angle formulas.
+  // compilers vectorise. Henyey-Greenstein lobes are detail::LobeShape's functions of sin and
+  // cos of delta / 2; a clamped cosine is r cos(delta - theta_e) / pi, from the same pair by
+  // the double-angle formulas.
   template <std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
     // (Computed here, not in the constructor: the Cauchy fits never need them. Inline
     // sines: two independent libm calls cost more than the polynomial, which overlaps.)
     switch (kind_) {
       case LobeKind::HenyeyGreenstein: {
-        const LobeShape b = Shape(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
-        return EvaluateWithPointLobe(delta, out, [&](SinCosPair<Real> half) {
-          Real wb = half.sin * b.from_sin + half.cos * b.from_cos, rb = RsqrtLanes(b.base + b.slope * wb * wb);
-          return b.scale * (rb * rb * rb);
-        });
+        const auto b = detail::LobeShape<Real>::Of(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
+        return EvaluateWithPointLobe(delta, out, b);
       }
       case LobeKind::ClampedCosine: {
         const SinCosPair<Real> peak = SinCosLanes(theta_e_);
@@ -147,34 +204,11 @@ class PhaseProduct {
   // evaluate()'s loop: the segment lobe times point_lobe(sin and cos of delta / 2).
   template <std::size_t N, typename PointLobe>
   void EvaluateWithPointLobe(const std::array<Real, N>& delta, std::array<Real, N>& out, PointLobe point_lobe) const {
-    const LobeShape a = Shape(g_, 1, 0, SinCosLanes(lower_ / 2));
+    const auto a = detail::LobeShape<Real>::Of(g_, 1, 0, SinCosLanes(lower_ / 2));
     for (std::size_t j = 0; j < N; ++j) {
       SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
-      Real wa = half.sin * a.from_sin + half.cos * a.from_cos, ra = RsqrtLanes(a.base + a.slope * wa * wa);
-      out[j] = a.scale * (ra * ra * ra) * point_lobe(half);
+      out[j] = a(half) * point_lobe(half);
     }
-  }
-
-  // One Henyey-Greenstein lobe as evaluate() needs it (see there).
-  struct LobeShape {
-    Real from_sin = 0, from_cos = 0, base = 1, slope = 0, scale = kInvPi<Real> / 4;
-  };
-  // rotation: sin and cos of the lobe's half angle at delta = 0 (r = 1 for the segment
-  // lobe). The half angle from the peak is that one for g >= 0 and its complement for g < 0.
-  static LobeShape Shape(Real g, Real r, Real one_minus_r, SinCosPair<Real> rotation) {
-    Real ag = std::abs(g);
-    LobeShape s;
-    if (g >= 0) {
-      s.from_sin = rotation.cos;
-      s.from_cos = -rotation.sin;
-    } else {
-      s.from_sin = rotation.sin;
-      s.from_cos = rotation.cos;
-    }
-    s.base = Sqr(1 - ag) + 2 * ag * one_minus_r;
-    s.slope = 4 * ag * r;
-    s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
-    return s;
   }
 
   Real g_, g_point_;

@@ -24,7 +24,8 @@
 // Node values are floored at kRelativeFloor x their largest, so the density is positive
 // wherever the integrand is and a poor estimate costs at most a bounded factor in variance.
 // The fit costs kNodes x (VrlPoint sample + angle domain + 1 to 5 pieces x kRule target
-// evaluations): about 2 us in float, 20 times VrlPoint (docs/bench.md).
+// evaluations), run as two loops over the nodes that vectorise in float (FitNodes); its
+// time is vrlis_bench's VrlMarginal/step (docs/bench.md).
 //
 // The camera segment is the gather's [tmin, tmax], transmittance measured from x(tmin);
 // tmax may be +infinity: the angle domain maps it to a bounded interval and transmittance
@@ -133,61 +134,110 @@ class VrlMarginal {
     return kNodes;
   }
 
-  // The node values: the marginal estimate over VrlPoint's density at each node.
+  // The node values: the marginal estimate over VrlPoint's density at each node. Without
+  // anisotropy (g = 0) both lobes are flat and one piece serves; otherwise up to kPieces.
   void Fit(const MediumGatherQuery<Real>& q, const std::array<Real, kMax>& xi, int count,
            std::array<Real, kMax>& value) const {
+    if (q.medium.g == 0 || !kSplit) {
+      FitNodes<1>(q, xi, count, value);
+    } else {
+      FitNodes<kPieces>(q, xi, count, value);
+    }
+  }
+
+  static constexpr int kPieces = 5;  // cut at the point lobe's peak +- a few widths and at the pole's reach
+
+  // The fit in two loops over the nodes, each branch-free so that it vectorises in float:
+  // the first places each node's VRL point, reduces the camera segment to its angle domain
+  // (detail::ReduceToAngles), shapes both lobes and cuts the rule's pieces; the second runs
+  // the rule, kUsed pieces of kRule points, over all nodes at once. A node with fewer cuts
+  // has empty pieces (zero width), so every node takes the same points.
+  template <int kUsed>
+  void FitNodes(const MediumGatherQuery<Real>& q, const std::array<Real, kMax>& xi, int count,
+                std::array<Real, kMax>& value) const {
     // Gauss-Legendre on [0, 1].
     constexpr Real x2 = Real(0.21132486540518711775), x3 = Real(0.11270166537925831148);
-    const Real xs[3] = {kRule == 1 ? Real(0.5) : kRule == 2 ? x2 : x3, kRule == 2 ? 1 - x2 : Real(0.5), 1 - x3};
-    const Real ws[3] = {kRule == 1 ? Real(1) : kRule == 2 ? Real(0.5) : Real(5) / 18,
-                        kRule == 2 ? Real(0.5) : Real(8) / 18, Real(5) / 18};
-    const Real g = q.medium.g, sigma_t = q.medium.sigma_t;
-    SegmentQuery<Real> sq = MediumToMediumQuery(q.camera.origin, q.camera.dir, q.camera.tmin, q.camera.tmax,
-                                                q.vrl.origin, q.vrl.dir, g, sigma_t);
-    const Vec3<Real> camera_start = q.camera.at(q.camera.tmin);
-    std::array<Real, kMax> depth;
-    for (int j = 0; j < count; ++j) {
-      Real v = vp_.sample(xi[j]);
-      sq.point = q.vrl.at(v);
-      AngleDomain<Real> dom(sq);
-      FullProductTarget<Real> target(sq, dom);
-      Real width = dom.width(), peak = target.point_peak();
-      auto rule = [&](Real a, Real b) {
-        Real sum = 0;
-        for (int i = 0; i < kRule; ++i) sum += ws[i] * target(a + xs[i] * (b - a));
-        return (b - a) * sum;
-      };
-      if constexpr (!kSplit) {
-        value[j] = rule(Real(0), width);
-      } else {
+    constexpr Real xs[3] = {kRule == 1 ? Real(0.5) : kRule == 2 ? x2 : x3, kRule == 2 ? 1 - x2 : Real(0.5), 1 - x3};
+    constexpr Real ws[3] = {kRule == 1 ? Real(1) : kRule == 2 ? Real(0.5) : Real(5) / 18,
+                            kRule == 2 ? Real(0.5) : Real(8) / 18, Real(5) / 18};
+    const Real g = q.medium.g, sigma_t = q.medium.sigma_t, lobe = 3 * (1 - std::abs(g));
+    const RaySegment<Real>& camera = q.camera;
+    const Vec3<Real> camera_start = camera.at(camera.tmin);
+    const detail::VrlPointDensity<Real>& density = vp_.density();
+    const bool representable = vp_.representable();
+    // One array per quantity (the layout vector loads want): the transmittance's pole and
+    // scale, both lobes' rotations (their other parameters are the query's), the cuts.
+    std::array<Real, kMax> depth, depth_scale, pole_sin, pole_cos, point_sin, point_cos, point_base, point_slope;
+    std::array<std::array<Real, kMax>, kUsed + 1> cut;  // node j's pieces run from cut[k][j] to cut[k + 1][j]
+    const Real turn = g < 0 ? kPi<Real> : Real(0);  // the point lobe peaks opposite its axis for g < 0
+    for (int j = 0; j < kMax; ++j) {
+      Real v = SelectLanes(representable, detail::SampleVrlPointDensity<true>(density, xi[j]).t, density.tmin);
+      Vec3<Real> y = q.vrl.at(v);
+      const detail::AngleFrame<Real> frame =
+          detail::ReduceToAngles<true>(y, camera.origin, camera.dir, camera.tmin, camera.tmax);
+      const Real lower = detail::PolesOf<true>(frame.tan_a).lower;
+      const detail::LobeInPlane<Real> in_plane =
+          detail::ProjectLobe<true>(q.vrl.dir, frame.n, camera.dir, frame.tan_a, frame.on_line);
+      const SinCosPair<Real> pole = SinCosLanes(lower / 2);
+      pole_sin[j] = pole.sin;
+      pole_cos[j] = pole.cos;
+      depth_scale[j] = sigma_t * frame.h / pole.cos;
+      const auto point = detail::LobeShape<Real>::Of(g, in_plane.r, in_plane.one_minus_r, SinCosLanes(in_plane.theta_e / 2));
+      point_sin[j] = point.from_sin;
+      point_cos[j] = point.from_cos;
+      point_base[j] = point.base;
+      point_slope[j] = point.slope;
+      depth[j] = sigma_t * (v + SqrtLanes(Dot(y - camera_start, y - camera_start)));
+      const Real width = frame.width;
+      cut[0][j] = 0;
+      cut[kUsed][j] = width;
+      if constexpr (kUsed > 1) {
+        static_assert(kUsed == 5, "four interior cuts");
         // Pieces that isolate the lobes' peaks, so the rule sees them: the point lobe's peak
-        // (if inside) with a few lobe widths (1 - |g|) on either side, and the segment lobe's
-        // peak, a pole at or beyond one end, with a few lobe widths plus its distance.
-        std::array<Real, 6> cut;
-        int n = 0;
-        cut[n++] = 0;
-        Real lobe = 3 * (1 - std::abs(g));
-        if (!target.point_lobe_flat() && peak > 0 && peak < width) {
-          if (peak - lobe > 0) cut[n++] = peak - lobe;
-          cut[n++] = peak;
-          if (peak + lobe < width) cut[n++] = peak + lobe;
-        }
-        if (g != 0) {
-          Real pole = kPi<Real> / 2 + (g > 0 ? dom.theta_a() : -dom.theta_b());  // beyond its end
-          Real reach = lobe + pole;
-          if (reach < width / 2) cut[n++] = g > 0 ? reach : width - reach;
-        }
-        cut[n++] = width;
-        std::sort(cut.begin(), cut.begin() + n);
-        Real sum = 0;
-        for (int k = 0; k + 1 < n; ++k) sum += rule(cut[k], cut[k + 1]);
-        value[j] = sum;
+        // (if inside; PhaseProduct::point_peak) with a few lobe widths (1 - |g|) on either
+        // side, and the segment lobe's peak, a pole at or beyond one end (its distance: -lower,
+        // or upper - width with upper = lower + pi), with a few lobe widths plus that distance.
+        // A cut that is not made sits at 0; a sorting network puts the four in order.
+        Real base = in_plane.theta_e + turn, from_middle = base - width / 2;
+        Real peak = base - 2 * kPi<Real> * (Real(from_middle > kPi<Real>) - Real(from_middle < -kPi<Real>));
+        bool inside = (in_plane.r > 0) & (peak > 0) & (peak < width);
+        Real reach = lobe + SelectLanes(g > 0, -lower, lower + kPi<Real> - width);
+        std::array<Real, 4> c = {SelectLanes(inside & (peak - lobe > 0), peak - lobe, Real(0)),
+                                 SelectLanes(inside, peak, Real(0)),
+                                 SelectLanes(inside & (peak + lobe < width), peak + lobe, Real(0)),
+                                 SelectLanes(reach < width / 2, SelectLanes(g > 0, reach, width - reach), Real(0))};
+        auto order = [&c](int a, int b) {
+          Real lo = SelectLanes(c[b] < c[a], c[b], c[a]), hi = SelectLanes(c[b] < c[a], c[a], c[b]);
+          c[a] = lo;
+          c[b] = hi;
+        };
+        order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
+        for (int k = 0; k < 4; ++k) cut[k + 1][j] = c[k];
       }
-      depth[j] = sigma_t * (v + Length(sq.point - camera_start));
+    }
+    // The rule, node by node in lanes; the segment lobe's rotation is the pole's.
+    const Real point_scale = detail::LobeShape<Real>::Of(g, 1, 0, {}).scale;  // the lobes' g is the same
+    // Cuts not made sort to the front as empty pieces; skip those empty at every node.
+    int first = 0;
+    while (first + 1 < kUsed && *std::max_element(cut[first + 1].begin(), cut[first + 1].end()) == 0) ++first;
+    std::array<Real, kMax> sum{};
+    for (int k = first; k < kUsed; ++k) {
+      const std::array<Real, kMax>& from = cut[k];
+      const std::array<Real, kMax>& to = cut[k + 1];
+      for (int i = 0; i < kRule; ++i) {
+        for (int j = 0; j < kMax; ++j) {
+          Real a = from[j], b = to[j], delta = a + xs[i] * (b - a);
+          SinCosPair<Real> half = SinCosLanes(delta / 2), pole{pole_sin[j], pole_cos[j]};
+          const detail::LobeShape<Real> point{point_sin[j], point_cos[j], point_base[j], point_slope[j], point_scale},
+              segment = detail::LobeShape<Real>::Of(g, 1, 0, pole);
+          Real transmittance = SelectLanes(depth_scale[j] > 0, detail::SegmentTransmittance(half, pole, depth_scale[j]), Real(1));
+          sum[j] += ws[i] * (b - a) * segment(half) * point(half) * transmittance;
+        }
+      }
     }
     // Transmittance relative to the nearest node, so it underflows only where it is negligible.
     Real least = *std::min_element(depth.begin(), depth.begin() + count);
-    for (int j = 0; j < count; ++j) value[j] *= std::exp(least - depth[j]);
+    for (int j = 0; j < count; ++j) value[j] = sum[j] * std::exp(least - depth[j]);
     Real largest = *std::max_element(value.begin(), value.begin() + count);
     if (!(largest > 0) || !std::isfinite(largest)) {
       value.fill(1);

@@ -150,7 +150,7 @@ class VrlPoint {
   VrlPoint(const VrlPointQuery<Real>& q, QueryError error) : error_(error) {
     density_.tmin = q.tmin;
     density_.tmax = q.tmax;
-    if (valid() && Representable()) density_ = detail::FitVrlPointDensity<false>(q);
+    if (valid() && representable()) density_ = detail::FitVrlPointDensity<false>(q);
   }
 
  public:
@@ -158,7 +158,7 @@ class VrlPoint {
 
   Real pdf(Real v) const {
     const detail::VrlPointDensity<Real>& f = density_;
-    if (!valid() || !(v >= f.tmin && v <= f.tmax) || !Representable()) return 0;
+    if (!valid() || !(v >= f.tmin && v <= f.tmax) || !representable()) return 0;
     if (f.k == 0) return 1 / (f.tmax - f.tmin);
     Real x = f.xa + f.k * (v - f.tmin);
     return f.k / (f.total * std::sqrt(1 + x * x));
@@ -167,22 +167,27 @@ class VrlPoint {
   // The density from the sample's hyperbolic functions: sqrt(1 + x^2) = cosh(asinh(x)).
   SegmentSample<Real> sample_pdf(Real u) const {
     if (!valid()) return {kNaN, 0};
-    if (!Representable()) return {density_.tmin, 0};
+    if (!representable()) return {density_.tmin, 0};
     return detail::SampleVrlPointDensity<false>(density_, u);
   }
 
   Real invert(Real v) const {
     const detail::VrlPointDensity<Real>& f = density_;
     if (!valid()) return kNaN;
-    if (!Representable()) return 0;
+    if (!representable()) return 0;
     v = Clamp(v, f.tmin, f.tmax);
     if (f.k == 0) return (v - f.tmin) / (f.tmax - f.tmin);
     return Clamp(AsinhDifference(f.xa, f.k * (v - f.tmin)) / f.total, Real(0), Real(1));
   }
 
+  // The fitted density, for samplers that take many samples at once in lanes
+  // (detail::SampleVrlPointDensity<true>); meaningful only where valid() and representable().
+  const detail::VrlPointDensity<Real>& density() const { return density_; }
+  // Whether the VRL is long enough for a density (else sample_pdf gives tmin with pdf 0).
+  bool representable() const { return RepresentableLength(density_.tmax - density_.tmin); }
+
  private:
   static constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
-  bool Representable() const { return RepresentableLength(density_.tmax - density_.tmin); }
 
   QueryError error_;
   detail::VrlPointDensity<Real> density_;
