@@ -69,8 +69,8 @@ struct LobeShape {
   [[gnu::always_inline]] static LobeShape Of(Real g, Real r, Real one_minus_r, SinCosPair<Real> rotation) {
     Real ag = std::abs(g);
     LobeShape s;
-    s.from_sin = g >= 0 ? rotation.cos : rotation.sin;
-    s.from_cos = g >= 0 ? -rotation.sin : rotation.cos;
+    s.from_sin = SelectLanes(g >= 0, rotation.cos, rotation.sin);  // (selects: loops over lobes vectorise)
+    s.from_cos = SelectLanes(g >= 0, -rotation.sin, rotation.cos);
     s.base = Sqr(1 - ag) + 2 * ag * one_minus_r;
     s.slope = 4 * ag * r;
     s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);

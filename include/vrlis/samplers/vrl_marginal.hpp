@@ -138,10 +138,12 @@ class VrlMarginal {
   // anisotropy (g = 0) both lobes are flat and one piece serves; otherwise up to kPieces.
   void Fit(const MediumGatherQuery<Real>& q, const std::array<Real, kMax>& xi, int count,
            std::array<Real, kMax>& value) const {
-    if (q.medium.g == 0 || !kSplit) {
-      FitNodes<1>(q, xi, count, value);
+    if (q.medium.g == 0) {
+      FitNodes<1, true>(q, xi, count, value);
+    } else if constexpr (!kSplit) {
+      FitNodes<1, false>(q, xi, count, value);
     } else {
-      FitNodes<kPieces>(q, xi, count, value);
+      FitNodes<kPieces, false>(q, xi, count, value);
     }
   }
 
@@ -151,8 +153,9 @@ class VrlMarginal {
   // the first places each node's VRL point, reduces the camera segment to its angle domain
   // (detail::ReduceToAngles), shapes both lobes and cuts the rule's pieces; the second runs
   // the rule, kUsed pieces of kRule points, over all nodes at once. A node with fewer cuts
-  // has empty pieces (zero width), so every node takes the same points.
-  template <int kUsed>
+  // has empty pieces (zero width), so every node takes the same points. kIsotropic (g = 0):
+  // both lobes are the constant 1 / (4 pi), and only the transmittance is shaped.
+  template <int kUsed, bool kIsotropic>
   void FitNodes(const MediumGatherQuery<Real>& q, const std::array<Real, kMax>& xi, int count,
                 std::array<Real, kMax>& value) const {
     // Gauss-Legendre on [0, 1].
@@ -176,17 +179,20 @@ class VrlMarginal {
       const detail::AngleFrame<Real> frame =
           detail::ReduceToAngles<true>(y, camera.origin, camera.dir, camera.tmin, camera.tmax);
       const Real lower = detail::PolesOf<true>(frame.tan_a).lower;
-      const detail::LobeInPlane<Real> in_plane =
-          detail::ProjectLobe<true>(q.vrl.dir, frame.n, camera.dir, frame.tan_a, frame.on_line);
       const SinCosPair<Real> pole = SinCosLanes(lower / 2);
       pole_sin[j] = pole.sin;
       pole_cos[j] = pole.cos;
       depth_scale[j] = sigma_t * frame.h / pole.cos;
-      const auto point = detail::LobeShape<Real>::Of(g, in_plane.r, in_plane.one_minus_r, SinCosLanes(in_plane.theta_e / 2));
-      point_sin[j] = point.from_sin;
-      point_cos[j] = point.from_cos;
-      point_base[j] = point.base;
-      point_slope[j] = point.slope;
+      detail::LobeInPlane<Real> in_plane{};
+      if constexpr (!kIsotropic) {
+        in_plane = detail::ProjectLobe<true>(q.vrl.dir, frame.n, camera.dir, frame.tan_a, frame.on_line);
+        const auto point =
+            detail::LobeShape<Real>::Of(g, in_plane.r, in_plane.one_minus_r, SinCosLanes(in_plane.theta_e / 2));
+        point_sin[j] = point.from_sin;
+        point_cos[j] = point.from_cos;
+        point_base[j] = point.base;
+        point_slope[j] = point.slope;
+      }
       depth[j] = sigma_t * (v + SqrtLanes(Dot(y - camera_start, y - camera_start)));
       const Real width = frame.width;
       cut[0][j] = 0;
@@ -228,16 +234,20 @@ class VrlMarginal {
         for (int j = 0; j < kMax; ++j) {
           Real a = from[j], b = to[j], delta = a + xs[i] * (b - a);
           SinCosPair<Real> half = SinCosLanes(delta / 2), pole{pole_sin[j], pole_cos[j]};
-          const detail::LobeShape<Real> point{point_sin[j], point_cos[j], point_base[j], point_slope[j], point_scale},
-              segment = detail::LobeShape<Real>::Of(g, 1, 0, pole);
           Real transmittance = SelectLanes(depth_scale[j] > 0, detail::SegmentTransmittance(half, pole, depth_scale[j]), Real(1));
-          sum[j] += ws[i] * (b - a) * segment(half) * point(half) * transmittance;
+          Real lobes = point_scale * point_scale;
+          if constexpr (!kIsotropic) {
+            const detail::LobeShape<Real> point{point_sin[j], point_cos[j], point_base[j], point_slope[j], point_scale},
+                segment = detail::LobeShape<Real>::Of(g, 1, 0, pole);
+            lobes = segment(half) * point(half);
+          }
+          sum[j] += ws[i] * (b - a) * lobes * transmittance;
         }
       }
     }
     // Transmittance relative to the nearest node, so it underflows only where it is negligible.
     Real least = *std::min_element(depth.begin(), depth.begin() + count);
-    for (int j = 0; j < count; ++j) value[j] = sum[j] * std::exp(least - depth[j]);
+    for (int j = 0; j < kMax; ++j) value[j] = sum[j] * ExpLanes(least - depth[j]);  // past count: unused
     Real largest = *std::max_element(value.begin(), value.begin() + count);
     if (!(largest > 0) || !std::isfinite(largest)) {
       value.fill(1);
