@@ -114,7 +114,7 @@ TEST_CASE("a pass's effort decisions come from the passes before it", "[render][
   CHECK_FALSE(Same(fresh.RenderPass(1, 3, nullptr), original));
 }
 
-TEST_CASE("effort: gathers without variance fall to the floor, a scene of gathers keeps them", "[render][effort]") {
+TEST_CASE("effort: gathers without variance fall to the floor, a scene of gathers keeps them", "[render][effort][timing]") {
   auto gathers = [](const char* scene, int pass) {
     auto built = EffortScene(scene);
     REQUIRE(built);
@@ -130,7 +130,7 @@ TEST_CASE("effort: gathers without variance fall to the floor, a scene of gather
   CHECK(bidirectional >= 1);
 }
 
-TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort]") {
+TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort][timing]") {
   auto mean_rate = [](const char* scene) {
     return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
                                     const vrlis::integration::RenderSettings& s, int x, int y) {
@@ -210,7 +210,7 @@ TEST_CASE("effort: a split remainder keeps its mean and learns its second moment
   if (rate != 1) CHECK(std::abs(z(sabotaged, 0.5)) > 4);
 }
 
-TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
+TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort][timing]") {
   auto mean_rate = [](const char* scene) {
     return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
                                     const vrlis::integration::RenderSettings&, int x, int y) {
@@ -227,7 +227,7 @@ TEST_CASE("effort: the remainder is split where its paths hold the noise, never 
 }
 
 TEST_CASE("effort: auto takes the model whose variance is worth less than the time it saves",
-          "[render][effort]") {
+          "[render][effort][timing]") {
   using vrlis::EffortModel;
   auto model = [](const char* scene, float g) {
     vrlis::scenes::MediumOverrides medium;
@@ -280,7 +280,7 @@ TEST_CASE("effort: the price takes the model whose variance x time is least", "[
   CHECK(model(0.02) == EffortModel::Chosen);
 }
 
-TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort]") {
+TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort][timing]") {
   auto decide = [](const char* scene, float g, const char* sampler) {
     vrlis::scenes::MediumOverrides medium;
     medium.g = g;
