@@ -57,6 +57,17 @@ template <bool kLanes, typename Real>
   return out;
 }
 
+// Of a peak at offset `base` and its images 2 pi apart, the one nearest the interval
+// [0, width]: the one nearest its midpoint (the images are 2 pi apart, the interval at most pi
+// wide), base - 2 pi k with k the integer nearest (base - width / 2) / (2 pi). For base in
+// [-pi, 2 pi], k is -1, 0 or 1, found by two comparisons (not branches: the side is random
+// across queries).
+template <typename Real>
+[[gnu::always_inline]] inline Real NearestPeak(Real base, Real width) {
+  Real from_middle = base - width / 2;
+  return base - 2 * kPi<Real> * (Real(from_middle > kPi<Real>) - Real(from_middle < -kPi<Real>));
+}
+
 // One Henyey-Greenstein lobe as a function of the sines and cosines of delta / 2: K d^(-3/2)
 // with d = (1 - |g|)^2 + 2 |g| (1 - r) + 4 |g| r w^2, w the sine of its half angle from its
 // peak (r = 1 for the segment lobe), w = from_sin sin(delta / 2) + from_cos cos(delta / 2).
@@ -172,17 +183,10 @@ class PhaseProduct {
   }
 
   // Where each lobe peaks, as an offset. The segment lobe peaks at a pole, on or beyond an
-  // endpoint; of the point lobe's peaks modulo 2 pi, the one nearest the interval. That is
-  // the one nearest its midpoint (the images are 2 pi apart, the interval at most pi wide),
-  // base - 2 pi k with k the integer nearest (base - width / 2) / (2 pi): base lies in
-  // [-pi, 2 pi], so k is -1, 0 or 1, found by two comparisons (not branches: the side is
-  // random across queries).
+  // endpoint; of the point lobe's peaks modulo 2 pi, the one nearest the interval
+  // (detail::NearestPeak; theta_e + pi for g < 0 lies in [-pi, 2 pi]).
   Real segment_peak() const { return g_ > 0 ? lower_ : upper_; }
-  Real point_peak() const {
-    Real base = theta_e_ + (point_g() < 0 ? kPi<Real> : Real(0)), from_middle = base - width_ / 2;
-    Real k = Real(from_middle > kPi<Real>) - Real(from_middle < -kPi<Real>);
-    return base - 2 * kPi<Real> * k;
-  }
+  Real point_peak() const { return detail::NearestPeak(theta_e_ + (point_g() < 0 ? kPi<Real> : Real(0)), width_); }
   // Where a piecewise-linear fit must have a node, in increasing order: the point lobe's
   // peak when it lies inside the interval (Novák's split). Returns how many.
   int splits(std::array<Real, 2>& out) const {

@@ -204,8 +204,7 @@ class VrlMarginal {
         // side, and the segment lobe's peak, a pole at or beyond one end (its distance: -lower,
         // or upper - width with upper = lower + pi), with a few lobe widths plus that distance.
         // A cut that is not made sits at 0; a sorting network puts the four in order.
-        Real base = in_plane.theta_e + turn, from_middle = base - width / 2;
-        Real peak = base - 2 * kPi<Real> * (Real(from_middle > kPi<Real>) - Real(from_middle < -kPi<Real>));
+        Real peak = detail::NearestPeak(in_plane.theta_e + turn, width);
         bool inside = (in_plane.r > 0) & (peak > 0) & (peak < width);
         Real reach = lobe + SelectLanes(g > 0, -lower, lower + kPi<Real> - width);
         std::array<Real, 4> c = {SelectLanes(inside & (peak - lobe > 0), peak - lobe, Real(0)),
