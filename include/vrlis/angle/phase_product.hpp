@@ -87,11 +87,23 @@ struct LobeShape {
     s.scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
     return s;
   }
+  [[gnu::always_inline]] Real d(SinCosPair<Real> half) const {
+    Real w = half.sin * from_sin + half.cos * from_cos;
+    return base + slope * w * w;
+  }
   [[gnu::always_inline]] Real operator()(SinCosPair<Real> half) const {
-    Real w = half.sin * from_sin + half.cos * from_cos, rw = RsqrtLanes(base + slope * w * w);
-    return scale * (rw * rw * rw);
+    Real r = RsqrtLanes(d(half));
+    return scale * (r * r * r);
   }
 };
+
+// Two lobes' product at the same half angle with one reciprocal square root, (d_a d_b)^(-3/2):
+// each d is at least (1 - |g|)^2, so the product stays far inside float's range.
+template <typename Real>
+[[gnu::always_inline]] inline Real LobeProduct(const LobeShape<Real>& a, const LobeShape<Real>& b, SinCosPair<Real> half) {
+  Real r = RsqrtLanes(a.d(half) * b.d(half));
+  return a.scale * b.scale * (r * r * r);
+}
 
 }  // namespace detail
 
@@ -128,19 +140,21 @@ class PhaseProduct {
     switch (kind_) {
       case LobeKind::HenyeyGreenstein: {
         const auto b = detail::LobeShape<Real>::Of(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
-        return EvaluateWithPointLobe(delta, out, b);
+        return EvaluateWith(delta, out, [&](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
+          return detail::LobeProduct(a, b, half);
+        });
       }
       case LobeKind::ClampedCosine: {
         const SinCosPair<Real> peak = SinCosLanes(theta_e_);
         const Real scale = r_ * kInvPi<Real>;
-        return EvaluateWithPointLobe(delta, out, [&](SinCosPair<Real> half) {
+        return EvaluateWith(delta, out, [&](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
           Real cos = (half.cos - half.sin) * (half.cos + half.sin) * peak.cos + 2 * half.sin * half.cos * peak.sin;
-          return scale * SelectLanes(cos > 0, cos, Real(0));
+          return a(half) * scale * SelectLanes(cos > 0, cos, Real(0));
         });
       }
       case LobeKind::None: break;
     }
-    EvaluateWithPointLobe(delta, out, [](SinCosPair<Real>) { return Real(1); });
+    EvaluateWith(delta, out, [](const detail::LobeShape<Real>& a, SinCosPair<Real> half) { return a(half); });
   }
 
   Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
@@ -205,14 +219,11 @@ class PhaseProduct {
   }
 
  private:
-  // evaluate()'s loop: the segment lobe times point_lobe(sin and cos of delta / 2).
-  template <std::size_t N, typename PointLobe>
-  void EvaluateWithPointLobe(const std::array<Real, N>& delta, std::array<Real, N>& out, PointLobe point_lobe) const {
+  // evaluate()'s loop: product(segment lobe, sin and cos of delta / 2) at every offset.
+  template <std::size_t N, typename Product>
+  void EvaluateWith(const std::array<Real, N>& delta, std::array<Real, N>& out, Product product) const {
     const auto a = detail::LobeShape<Real>::Of(g_, 1, 0, SinCosLanes(lower_ / 2));
-    for (std::size_t j = 0; j < N; ++j) {
-      SinCosPair<Real> half = SinCosLanes(delta[j] / 2);
-      out[j] = a(half) * point_lobe(half);
-    }
+    for (std::size_t j = 0; j < N; ++j) out[j] = product(a, SinCosLanes(delta[j] / 2));
   }
 
   Real g_, g_point_;

@@ -238,7 +238,7 @@ class VrlMarginal {
           if constexpr (!kIsotropic) {
             const detail::LobeShape<Real> point{point_sin[j], point_cos[j], point_base[j], point_slope[j], point_scale},
                 segment = detail::LobeShape<Real>::Of(g, 1, 0, pole);
-            lobes = segment(half) * point(half);
+            lobes = detail::LobeProduct(segment, point, half);
           }
           sum[j] += ws[i] * (b - a) * lobes * transmittance;
         }
