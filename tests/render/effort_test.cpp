@@ -16,8 +16,9 @@
 //   statistics estimate the path's second moment; without its 1 / rate it is rejected;
 // - the remainder's demand follows the price: above 2 paths per camera vertex in corner, whose
 //   remainder holds most of the variance, and under a quarter of that in room, whose holds almost none;
-// - `auto` takes the cheapest model where the variance it adds is worth less than the time it
-//   saves: in room (gathers without variance), not in the bidirectional scene at g = 0.9;
+// - `auto` takes a model cheaper than its rule where the variance it adds is worth less than
+//   the time it saves: in room (gathers without variance) equiangular or the mixture, and not
+//   equiangular in the bidirectional scene at g = 0.9;
 // - the price compares the image's states whole: on synthetic passes it takes the mixture
 //   where its added variance and saved time lower V x T (also where first order says the
 //   rule) and the rule where they raise it;
@@ -240,7 +241,12 @@ TEST_CASE("effort: auto takes the model whose variance is worth less than the ti
     for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
     return r.effort_price().model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
   };
-  CHECK(model("room", 0.5f) == EffortModel::Cheapest);  // its gathers hold almost none of the variance
+  // Room's gathers hold almost none of the variance: either model cheaper than the rule pays.
+  // Which of the two is a race of their seconds per sample, measured on a few pilot pixels,
+  // that a loaded machine decides (the mixture won it in 1 of 8 runs beside two busy cores).
+  const EffortModel room = model("room", 0.5f);
+  INFO("room: model " << static_cast<int>(room));
+  CHECK((room == EffortModel::Cheapest || room == EffortModel::Mixture));
   CHECK(model("bidirectional", 0.9f) != EffortModel::Cheapest);  // equiangular sampling there has many times a fit's
 }
 
