@@ -66,13 +66,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
-    float weights[kChunk];  // read by the effort control only
+    float weights[kChunk];  // read by decided gathers only
     int samples[kChunk];
-    double sum_y[kChunk], sum_y2[kChunk];  // per VRL, of its samples' unweighted contributions; with stats only
+    double sum_y[kChunk], sum_y2[kChunk];  // per VRL, of its samples' unweighted contributions; decided, with stats
     for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]);
-    if (effort.on)
+    if (decided)
       for (int i = 0; i < n; ++i) weights[i] = (throughput * chunk[i].flux).Rms();
-    if (stats)
+    const bool split = stats && decided;  // undecided, every VRL takes one sample
+    if (split)
       for (int i = 0; i < n; ++i) samples[i] = 0, sum_y[i] = sum_y2[i] = 0;
     auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
       Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
@@ -88,10 +89,10 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       }
       if (s.over_equiangular > 0) taken.cheapest_excess += vrlis::Sqr(effort_weight * y) * (s.over_equiangular - 1);
       if (s.over_mixture > 0) taken.mixture_excess += vrlis::Sqr(effort_weight * y) * (s.over_mixture - 1);
-      ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
+      if (split) ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     gather_chunk(segments, weights, n, connect, stats ? &tally : nullptr);
-    for (int i = 0; stats && i < n; ++i)
+    for (int i = 0; split && i < n; ++i)
       if (samples[i] > 1) {
         double k = samples[i], mean = sum_y[i] / k;
         taken.split_within += std::max(0.0, (sum_y2[i] - k * mean * mean) / (k - 1));
