@@ -149,19 +149,23 @@ class EffortPrice {
   bool measure_mixture(GatherKind kind, double u) const {
     return u < kMeasure || model_[static_cast<int>(kind)] != vrlis::EffortModel::Chosen;
   }
-  static constexpr double kExplore = 1.0 / 128, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
+  static constexpr double kExplore = 1.0 / 512, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
   // Whether a pixel's gathers of this kind are decided one by one in this pass
   // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
   // image's earlier decided calls, the decisions' seconds exceed what the variance they save
   // is worth (docs/maths.md#effort-decide), with probability kExplore; elsewhere always.
   // Before any price, with probability kCalibrate: unpriced, a decided gather is taken once as
   // any other, and only its bounds, which calibrate the first price, cost (the tight one about
-  // half a gather).
+  // half a gather). Priced but before any pass has decided, with probability kTrial: where the
+  // decisions do not pay, a pass that decided everywhere took twice an undecided one
+  // (bidirectional scene, g = 0), and a share measures whether they pay as well.
   bool decide(GatherKind kind, double u) const {
     if (passes_ < kMinPasses) return u < kCalibrate;
-    return decisions_pay_[static_cast<int>(kind)] || u < kExplore;
+    const int k = static_cast<int>(kind);
+    if (!(passes_of_[1].decided[k] > 0)) return u < kTrial;
+    return decisions_pay_[k] || u < kExplore;
   }
-  static constexpr double kCalibrate = 1.0 / 8;
+  static constexpr double kCalibrate = 1.0 / 8, kTrial = 1.0 / 4;
   int passes() const { return passes_; }
 
  private:
