@@ -1,5 +1,7 @@
 #include "vrlis_integration/camera_paths.hpp"
 
+#include <vrlis/gather/gather_vrls.hpp>
+
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
 #include "vrlis_integration/path_tracer.hpp"
@@ -28,6 +30,10 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   RemainderStats* remainder_stats = medium_effort.on ? &count->remainder : nullptr;
+  // The VPLs seen from a camera segment are unpriced; theirs is a point-and-line query like the
+  // medium-to-surface gather's, and they take that gather's model (auto's rule without one).
+  const vrlis::SegmentChoice vpl_sampler =
+      vrlis::SegmentSamplerFor(tr.sampling.segment, vrlis::ChooseEffortModel(surface_effort, 1));
   Spectrum L, beta(1.f);
   for (int depth = 0; depth < tr.max_depth; ++depth) {
     SurfaceHit hit;
@@ -50,7 +56,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
       }
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
-      if (tr.surface_to_medium) L += beta * GatherVpls(tr.sampling.segment, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
+      if (tr.surface_to_medium) L += beta * GatherVpls(vpl_sampler, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
       if (tr.indirect)  // a medium vertex by free flight, continued by path tracing
         L += SplitRemainder(remainder_rate, rng, remainder_stats, medium_effort.timed, [&] {
           float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();

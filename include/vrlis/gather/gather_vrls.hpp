@@ -161,6 +161,22 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
   });
 }
 
+// The segment sampler that `method` takes under the effort control's model (EffortModel,
+// ChooseEffortModel): `auto`'s rule, or in its place the accurate, the cheapest or the
+// mixture's sampler; any other sampler is its own. Also for a renderer's point-and-line
+// gathers that the control does not price (VPLs seen from a camera segment), which then
+// follow the medium-to-surface gathers' model: the same query.
+inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) {
+  if (method != SegmentSamplers::Of<AutoEntry>()) return method;
+  switch (model) {
+    case EffortModel::Accurate: return SegmentSamplers::Of<FullProductEntry>();
+    case EffortModel::Cheapest: return SegmentSamplers::Of<EquiangularEntry>();
+    case EffortModel::Mixture: return SegmentSamplers::Of<CauchyMixtureEntry>();
+    case EffortModel::Chosen: break;
+  }
+  return method;
+}
+
 // The medium-to-surface gathers of vrls[0, count) at the point (normal facing the viewer),
 // the VRL points by `method`'s camera sampler, as GatherMediumVrls.
 template <typename Real, typename Uniform, typename Connect>
@@ -182,11 +198,12 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
                                                                    b.count, b.u[0], samples, effort.measure_mixture);
           };
           if constexpr (policy) {
-            if (model == EffortModel::Accurate) return with(Type<FullProductEntry::Sampler<Real>>{});
-            if (model == EffortModel::Cheapest) return with(Type<EquiangularEntry::Sampler<Real>>{});
-            if (model == EffortModel::Mixture) return with(Type<CauchyMixtureEntry::Sampler<Real>>{});
+            SegmentSamplers::WithEntry(SegmentSamplerFor(method, model), [&](auto taken) {
+              with(Type<typename decltype(taken)::template Sampler<Real>>{});
+            });
+          } else {
+            with(Type<Sampler>{});
           }
-          with(Type<Sampler>{});
         },
         connect, tally);
   });
