@@ -9,6 +9,7 @@
 //   queries at their extremes.
 // - The bounds of effort.hpp are at or above the gather's mean; batched in vector lanes they
 //   are the one-at-a-time bounds to rounding.
+// - An effort model replaces auto's rule by its sampler and leaves every other sampler.
 #include <catch2/catch.hpp>
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
@@ -310,6 +311,22 @@ TEST_CASE("auto with the effort control takes the model its demand pays for", "[
   INFO("off " << off.mean << " +- " << off.se << ", on " << on.mean << " +- " << on.se);
   CHECK(Z(on, off) < 4);
   CHECK(Z(Estimate(s, mixed, 20000, true), off) > 4);
+}
+
+// The segment sampler a model stands for (SegmentSamplerFor): auto's model in place of its
+// rule, every other sampler its own whatever the model (the renderer's VPL gathers use it).
+TEST_CASE("an effort model replaces auto's rule and no other sampler", "[gather][effort]") {
+  using vrlis::EffortModel;
+  auto named = [](const char* name) { return *vrlis::ParseSegmentSampler(name); };
+  CHECK(vrlis::SegmentSamplerFor(named("auto"), EffortModel::Chosen) == named("auto"));
+  CHECK(vrlis::SegmentSamplerFor(named("auto"), EffortModel::Cheapest) == named("equiangular"));
+  CHECK(vrlis::SegmentSamplerFor(named("auto"), EffortModel::Mixture) == named("cauchy-mixture"));
+  CHECK(vrlis::SegmentSamplerFor(named("auto"), EffortModel::Accurate) == named("full-product"));
+  for (const char* name : {"equiangular", "novak", "cauchy-sum", "cauchy-mixture", "full-product"})
+    for (EffortModel m : {EffortModel::Chosen, EffortModel::Accurate, EffortModel::Cheapest, EffortModel::Mixture}) {
+      INFO(name << ", model " << static_cast<int>(m));
+      CHECK(vrlis::SegmentSamplerFor(named(name), m) == named(name));
+    }
 }
 
 // GatherSample::over_equiangular and over_mixture: over auto's samples, weight^2 x the ratio
