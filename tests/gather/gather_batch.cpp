@@ -21,6 +21,10 @@
 // VRLs (with runs of one VRL, which share a fit) returns, VRL by VRL, the one-VRL gather
 // (SampleSurfaceGather) from the same random number: the same code from the same inputs,
 // equal to rounding.
+//
+// Both, on the widest vector lanes the processor has (AVX2 where a default x86-64 build has
+// SSE; core/dispatch.hpp) and as built: the same code compiled twice, without contracted
+// multiply-adds on either, so equal to rounding too.
 #include <catch2/catch.hpp>
 #include <vrlis/vrlis.hpp>
 
@@ -65,14 +69,20 @@ bool Close(Real a, Real b, double scale = 0) {
          64 * std::numeric_limits<Real>::epsilon() * std::max({double(std::abs(a)), double(std::abs(b)), scale});
 }
 
+// A point's coordinates to the rounding of the point (a coordinate near 0 where origin and
+// offset cancel keeps only the absolute error of the larger ones), the rest to their own.
 template <typename Real>
 bool Same(const vrlis::GatherSample<Real>& a, const vrlis::GatherSample<Real>& b) {
+  auto size = [](vrlis::Vec3<Real> p, vrlis::Vec3<Real> q) {
+    return double(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(q.x), std::abs(q.y), std::abs(q.z)}));
+  };
+  const double camera = size(a.camera_point, b.camera_point), light = size(a.light_point, b.light_point);
   const Real fa[] = {a.camera_point.x, a.camera_point.y, a.camera_point.z, a.light_point.x, a.light_point.y,
                      a.light_point.z, a.t, a.pdf_t, a.v, a.pdf_v, a.transmittance, a.weight};
   const Real fb[] = {b.camera_point.x, b.camera_point.y, b.camera_point.z, b.light_point.x, b.light_point.y,
                      b.light_point.z, b.t, b.pdf_t, b.v, b.pdf_v, b.transmittance, b.weight};
   for (int i = 0; i < 12; ++i)
-    if (!Close(fa[i], fb[i])) return false;
+    if (!Close(fa[i], fb[i], i < 3 ? camera : i < 6 ? light : 0)) return false;
   return true;
 }
 
@@ -85,7 +95,7 @@ double StepOneSpread(const vrlis::RaySegment<Real>& camera, const vrlis::VrlSegm
 }
 
 template <typename Real>
-void BatchIsOneAtATime() {
+void BatchIsOneAtATime(bool widest) {
   std::mt19937 rng(29);
   std::uniform_real_distribution<Real> uniform(0, 1);
   const vrlis::Medium<Real> medium{Real(0.6), Real(0.4), Real(0.5)};
@@ -106,7 +116,8 @@ void BatchIsOneAtATime() {
         std::vector<vrlis::GatherSample<Real>> batch(n);
         vrlis::WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
           vrlis::SampleMediumGathers<typename decltype(step_one)::type, typename decltype(step_two)::type>(
-              vrlis::ValidQuery{}, camera, medium, vrls.data(), n, u_vrl.data(), u_camera.data(), batch.data());
+              vrlis::ValidQuery{}, camera, medium, vrls.data(), n, u_vrl.data(), u_camera.data(), batch.data(), false,
+              widest);
         });
         for (int i = 0; i < n; ++i) {
           vrlis::MediumGatherQuery<Real> q{camera, vrls[i], medium};
@@ -130,7 +141,7 @@ void BatchIsOneAtATime() {
 }
 
 template <typename Real>
-void SurfaceBatchIsOneAtATime() {
+void SurfaceBatchIsOneAtATime(bool widest) {
   std::mt19937 rng(31);
   std::uniform_real_distribution<Real> uniform(0, 1);
   const vrlis::Medium<Real> medium{Real(0.6), Real(0.4), Real(0.5)};
@@ -147,7 +158,7 @@ void SurfaceBatchIsOneAtATime() {
       std::vector<vrlis::GatherSample<Real>> batch(n);
       vrlis::SegmentSamplers::WithEntry(method, [&](auto entry) {
         vrlis::SampleSurfaceGathers<typename decltype(entry)::template Sampler<Real>>(
-            vrlis::ValidQuery{}, point, normal, medium, vrls.data(), n, u.data(), batch.data());
+            vrlis::ValidQuery{}, point, normal, medium, vrls.data(), n, u.data(), batch.data(), false, widest);
       });
       for (int i = 0; i < n; ++i) {
         vrlis::SurfaceGatherQuery<Real> q{point, normal, vrls[i], medium};
@@ -167,12 +178,25 @@ void SurfaceBatchIsOneAtATime() {
 
 }  // namespace
 
+// Both instruction-set paths (core/dispatch.hpp): the widest the processor has, and as built.
 TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (float)") {
-  SurfaceBatchIsOneAtATime<float>();
+  const bool widest = GENERATE(true, false);
+  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
+  SurfaceBatchIsOneAtATime<float>(widest);
 }
 TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (double)") {
-  SurfaceBatchIsOneAtATime<double>();
+  const bool widest = GENERATE(true, false);
+  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
+  SurfaceBatchIsOneAtATime<double>(widest);
 }
 
-TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (float)") { BatchIsOneAtATime<float>(); }
-TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (double)") { BatchIsOneAtATime<double>(); }
+TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (float)") {
+  const bool widest = GENERATE(true, false);
+  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
+  BatchIsOneAtATime<float>(widest);
+}
+TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (double)") {
+  const bool widest = GENERATE(true, false);
+  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
+  BatchIsOneAtATime<double>(widest);
+}

@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "../core/dispatch.hpp"
 #include "../method.hpp"
 #include "gather_sample.hpp"
 
@@ -103,11 +104,12 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // another (too many instructions for its reordering window) did not. Same numbers, fewer cycles.
 // With `auto` as the camera sampler and measure_mixture, each sample also carries
 // GatherSample::over_mixture (a CauchyMixture fit per sample).
+namespace detail {
 template <typename StepOneSampler, typename CameraSampler, typename Real>
-[[gnu::flatten]] void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
-                                          const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
-                                          const Real* u_camera, GatherSample<Real>* out,
-                                          bool measure_mixture = false) {
+[[gnu::flatten]] void SampleMediumGathersAsBuilt(const RaySegment<Real>& camera, const Medium<Real>& medium,
+                                                 const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
+                                                 const Real* u_camera, GatherSample<Real>* out,
+                                                 bool measure_mixture) {
   std::optional<StepOneSampler> step_one;  // fitted for vrls[fitted]
   int fitted = -1;
   for (int first = 0; first < count; first += kVrlPointBatch) {
@@ -146,6 +148,21 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       g.over_mixture = g.contributes() ? over_mixture[i] : Real(0);
     }
   }
+}
+}  // namespace detail
+
+// The batch above, on the widest vector lanes the processor has (core/dispatch.hpp);
+// `widest` false: as built.
+template <typename StepOneSampler, typename CameraSampler, typename Real>
+void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
+                         const VrlSegment<Real>* vrls, int count, const Real* u_vrl, const Real* u_camera,
+                         GatherSample<Real>* out, bool measure_mixture = false, bool widest = true) {
+  detail::WithWidestLanes(
+      [&] {
+        detail::SampleMediumGathersAsBuilt<StepOneSampler, CameraSampler>(camera, medium, vrls, count, u_vrl,
+                                                                          u_camera, out, measure_mixture);
+      },
+      widest);
 }
 
 // The same with the samplers chosen at run time; any query (an invalid one samples nothing).

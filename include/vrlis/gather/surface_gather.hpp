@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "../core/dispatch.hpp"
 #include "../method.hpp"
 #include "gather_sample.hpp"
 
@@ -63,10 +64,11 @@ template <typename Sampler, typename Real>
 // in phases over batches as SampleMediumGathers (fits, samples, integrands), one fit for a
 // run of equal VRLs (a split gather's samples): same numbers. measure_mixture: as
 // SampleMediumGathers.
+namespace detail {
 template <typename Sampler, typename Real>
-[[gnu::flatten]] void SampleSurfaceGathers(ValidQuery, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
-                                           const VrlSegment<Real>* vrls, int count, const Real* u,
-                                           GatherSample<Real>* out, bool measure_mixture = false) {
+[[gnu::flatten]] void SampleSurfaceGathersAsBuilt(Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
+                                                  const VrlSegment<Real>* vrls, int count, const Real* u,
+                                                  GatherSample<Real>* out, bool measure_mixture) {
   constexpr int kBatch = 8;  // enough independent gathers to fill the processor's reordering window
   for (int first = 0; first < count; first += kBatch) {
     int n = std::min(kBatch, count - first);
@@ -98,6 +100,18 @@ template <typename Sampler, typename Real>
       g.over_mixture = g.contributes() ? over_mixture[i] : Real(0);
     }
   }
+}
+}  // namespace detail
+
+// The batch above, on the widest vector lanes the processor has (core/dispatch.hpp);
+// `widest` false: as built.
+template <typename Sampler, typename Real>
+void SampleSurfaceGathers(ValidQuery, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
+                          const VrlSegment<Real>* vrls, int count, const Real* u, GatherSample<Real>* out,
+                          bool measure_mixture = false, bool widest = true) {
+  detail::WithWidestLanes(
+      [&] { detail::SampleSurfaceGathersAsBuilt<Sampler>(point, normal, medium, vrls, count, u, out, measure_mixture); },
+      widest);
 }
 
 // The same with the sampler chosen at run time; any query (an invalid one samples nothing).
