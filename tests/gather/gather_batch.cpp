@@ -176,27 +176,26 @@ void SurfaceBatchIsOneAtATime(bool widest) {
   }
 }
 
+// Runs check(widest) on both instruction-set paths (core/dispatch.hpp): the widest the
+// processor has, and as built.
+template <typename Check>
+void OnBothPaths(Check&& check) {
+  const bool widest = GENERATE(true, false);
+  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
+  check(widest);
+}
 }  // namespace
 
-// Both instruction-set paths (core/dispatch.hpp): the widest the processor has, and as built.
 TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (float)") {
-  const bool widest = GENERATE(true, false);
-  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
-  SurfaceBatchIsOneAtATime<float>(widest);
+  OnBothPaths(SurfaceBatchIsOneAtATime<float>);
 }
 TEST_CASE("batched surface gather: the one-VRL gather to rounding, every sampler (double)") {
-  const bool widest = GENERATE(true, false);
-  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
-  SurfaceBatchIsOneAtATime<double>(widest);
+  OnBothPaths(SurfaceBatchIsOneAtATime<double>);
 }
 
 TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (float)") {
-  const bool widest = GENERATE(true, false);
-  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
-  BatchIsOneAtATime<float>(widest);
+  OnBothPaths(BatchIsOneAtATime<float>);
 }
 TEST_CASE("batched medium gather: the one-VRL gather to rounding, every method (double)") {
-  const bool widest = GENERATE(true, false);
-  INFO("widest lanes " << widest << " (available: " << vrlis::detail::WidestLanesAvailable() << ")");
-  BatchIsOneAtATime<double>(widest);
+  OnBothPaths(BatchIsOneAtATime<double>);
 }
