@@ -4,12 +4,13 @@
 // default x86-64 build. Where the processor has AVX2, WithWidestLanes runs the same code
 // compiled for it, 8 lanes (VrlMarginal's fit about twice as fast,
 // docs/maths.md#vrl-marginal). Every sampler's gathers take the same path, so their
-// comparison is that of the code, not of the flags. Not FMA: contracted multiply-adds round differently, and next to the camera line a
-// weight moved by a percent between the paths; without them the paths agree to rounding
-// (tests/gather/gather_batch.cpp), and the renderer's images came out bit for bit the same
-// (FMA would add 10-15% more gathers per second). A build that already targets AVX2 (-march=x86-64-v3 and
-// later), a compiler other than GCC or Clang, another architecture, or VRLIS_NO_DISPATCH
-// defined before the first include runs the code as built.
+// comparison is that of the code, not of the flags. Not FMA: contracted multiply-adds round
+// differently, and next to the camera line a weight moved by a percent between the paths;
+// without them the paths agree to rounding (tests/gather/gather_batch.cpp), and the
+// renderer's images came out bit for bit the same (FMA would add 10-15% more gathers per
+// second). A build that already targets AVX2 (-march=x86-64-v3 and later), a compiler other
+// than GCC or Clang, another architecture, or VRLIS_NO_DISPATCH defined before the first
+// include runs the code as built.
 #if !defined(VRLIS_NO_DISPATCH) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && \
     !defined(__AVX2__)
 #define VRLIS_DISPATCH_AVX2 1

@@ -125,6 +125,22 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
 
 }  // namespace detail
 
+// The segment sampler that `method` takes under the effort control's model (EffortModel,
+// ChooseEffortModel): `auto`'s rule, or in its place the accurate, the cheapest or the
+// mixture's sampler; any other sampler is its own. Also for a renderer's point-and-line
+// gathers that the control does not price (VPLs seen from a camera segment), which then
+// follow the medium-to-surface gathers' model: the same query.
+inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) {
+  if (method != SegmentSamplers::Of<AutoEntry>()) return method;
+  switch (model) {
+    case EffortModel::Accurate: return SegmentSamplers::Of<FullProductEntry>();
+    case EffortModel::Cheapest: return SegmentSamplers::Of<EquiangularEntry>();
+    case EffortModel::Mixture: return SegmentSamplers::Of<CauchyMixtureEntry>();
+    case EffortModel::Chosen: break;
+  }
+  return method;
+}
+
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
 // tally, if set, adds the predictions (decided gathers only) and, in a timed call
@@ -148,33 +164,20 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
             SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
                 ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples, effort.measure_mixture);
           };
+          // A model in place of auto's rule: its segment sampler, after VrlMarginal for the
+          // accurate one and VrlPoint for the others.
           if constexpr (policy) {
-            using VrlPointSampler = Type<VrlPointEntry::Sampler<Real>>;
-            if (model == EffortModel::Accurate)
-              return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Type<FullProductEntry::Sampler<Real>>{});
-            if (model == EffortModel::Cheapest) return with(VrlPointSampler{}, Type<EquiangularEntry::Sampler<Real>>{});
-            if (model == EffortModel::Mixture) return with(VrlPointSampler{}, Type<CauchyMixtureEntry::Sampler<Real>>{});
+            if (model != EffortModel::Chosen)
+              return SegmentSamplers::WithEntry(SegmentSamplerFor(method.segment, model), [&](auto taken) {
+                using Two = Type<typename decltype(taken)::template Sampler<Real>>;
+                if (model == EffortModel::Accurate) return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Two{});
+                with(Type<VrlPointEntry::Sampler<Real>>{}, Two{});
+              });
           }
           with(Type<VrlSampler>{}, Type<StepTwo>{});
         },
         connect, tally);
   });
-}
-
-// The segment sampler that `method` takes under the effort control's model (EffortModel,
-// ChooseEffortModel): `auto`'s rule, or in its place the accurate, the cheapest or the
-// mixture's sampler; any other sampler is its own. Also for a renderer's point-and-line
-// gathers that the control does not price (VPLs seen from a camera segment), which then
-// follow the medium-to-surface gathers' model: the same query.
-inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) {
-  if (method != SegmentSamplers::Of<AutoEntry>()) return method;
-  switch (model) {
-    case EffortModel::Accurate: return SegmentSamplers::Of<FullProductEntry>();
-    case EffortModel::Cheapest: return SegmentSamplers::Of<EquiangularEntry>();
-    case EffortModel::Mixture: return SegmentSamplers::Of<CauchyMixtureEntry>();
-    case EffortModel::Chosen: break;
-  }
-  return method;
 }
 
 // The medium-to-surface gathers of vrls[0, count) at the point (normal facing the viewer),
@@ -198,12 +201,12 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
                                                                    b.count, b.u[0], samples, effort.measure_mixture);
           };
           if constexpr (policy) {
-            SegmentSamplers::WithEntry(SegmentSamplerFor(method, model), [&](auto taken) {
-              with(Type<typename decltype(taken)::template Sampler<Real>>{});
-            });
-          } else {
-            with(Type<Sampler>{});
+            if (model != EffortModel::Chosen)
+              return SegmentSamplers::WithEntry(SegmentSamplerFor(method, model), [&](auto taken) {
+                with(Type<typename decltype(taken)::template Sampler<Real>>{});
+              });
           }
+          with(Type<Sampler>{});
         },
         connect, tally);
   });
