@@ -67,6 +67,20 @@ baseline=$(VRLIS_BUILD="$new" /usr/bin/python3 -c 'import sys; sys.path.insert(0
 set -- $samplers
 profiled="bidirectional:$baseline cube:$1"
 
+# Per build, the flags under which both render the same transport: every gather taken once
+# where the build has the effort control, and without VPL gathers in a build that has them
+# against one that has none (their time is no VRL gather's; the cube's passes took 1.2 times as
+# long with them).
+has_option() { grep -q -- "$2" <<< "$("$1/examples/vrl_render" --help)"; }
+declare -A same
+for build in base new; do
+  dir=$([ "$build" = base ] && echo "$base" || echo "$new")
+  flags=()
+  ! has_option "$dir" --effort || flags+=(--effort off)
+  if has_option "$dir" --vpl-bound && ! has_option "$base" --vpl-bound; then flags+=(--vpl-bound 0); fi
+  same[$build]="${flags[*]}"
+done
+
 echo "== vrl_render: $reps rounds, builds interleaved (${size}x${size}, $spp passes)"
 for rep in $(seq "$reps"); do
   for scene in $scenes; do
@@ -77,14 +91,7 @@ for rep in $(seq "$reps"); do
           dir=$([ "$build" = base ] && echo "$base" || echo "$new")
           stem="$out/runs/${scene}_${sampler}_${threads}_${build}_$rep"
           run=("$dir/examples/vrl_render")
-          once=()  # every gather taken once, where the build has the effort control
-          "$dir/examples/vrl_render" --help | grep -q -- --effort && once=(--effort off)
-          # The same transport in both: a build with VPL gathers renders without them where
-          # the other has none (their time is no VRL gather's; the cube's passes took 1.2 times
-          # as long with them).
-          if "$dir/examples/vrl_render" --help | grep -q -- --vpl-bound && ! "$base/examples/vrl_render" --help | grep -q -- --vpl-bound; then
-            once+=(--vpl-bound 0)
-          fi
+          read -r -a once <<< "${same[$build]}"
           [ "$threads" != 1 ] || run=("${pin[@]}" "${run[@]}")
           [ "$threads" != 1b ] || run=("${other[@]}" "${run[@]}")
           "${run[@]}" --scene "$scene" --sampler "$sampler" --threads "${threads%b}" --width "$size" \
