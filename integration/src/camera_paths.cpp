@@ -26,7 +26,8 @@ void AddCall(const vrlis::EffortSettings& effort, std::size_t vrls, Spectrum con
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls,
                      const VplSet& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
-                     const vrlis::EffortSettings& surface_effort, double remainder_rate) {
+                     const vrlis::EffortSettings& surface_effort, double remainder_rate,
+                     const vrlis::EffortSettings* medium_pair) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   RemainderStats* remainder_stats = medium_effort.on ? &count->remainder : nullptr;
@@ -49,7 +50,8 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         {
           detail::Timer timer(effort.on && effort.timed, &stats.seconds);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
-                                                 effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
+                                                 effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound,
+                                                 medium_pair);
         }
         if (effort.on) AddCall(effort, vrls.size(), gathered, &stats);
         L += gathered;

@@ -8,15 +8,43 @@ namespace vrlis::integration {
 
 namespace {
 
+// The mean of the values with the largest thousandth left out (a few fireflies must not flip
+// decisions); 0 for none.
+double TrimmedMean(std::vector<double> values) {
+  if (values.empty()) return 0;
+  const std::size_t kept = values.size() - values.size() / 1000;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(kept) - 1, values.end());
+  double sum = 0;
+  for (std::size_t k = 0; k < kept; ++k) sum += values[k];
+  return sum / double(kept);
+}
+
 // A timed pixel's stats with their seconds weighted by w (an untimed pixel's are 0).
 EffortStats WeighSeconds(EffortStats s, double w) {
   s.seconds *= w, s.sample_seconds *= w;
   s.rule_seconds *= w, s.cheapest_seconds *= w, s.mixture_seconds *= w;
+  s.accurate_seconds *= w, s.pair_seconds *= w;
   return s;
 }
 RemainderStats WeighSeconds(RemainderStats s, double w) {
   s.seconds *= w;
   return s;
+}
+
+// The variance of one pass's pixel values: half the squared difference of horizontal
+// neighbours (x and x + 1, x even; it overstates the variance at edges), the mean over the
+// pairs with the largest thousandth left out; of the pairs whose first pixel `use` flags, if given.
+double NeighbourVariance(const std::vector<double>& values, int width, int height,
+                         const std::vector<bool>* use = nullptr) {
+  std::vector<double> pairs;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x + 1 < width; x += 2) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      if (use && !(*use)[i]) continue;
+      const double d = values[i] - values[i + 1];
+      pairs.push_back(d * d / 2);
+    }
+  return TrimmedMean(pairs);
 }
 
 }  // namespace
@@ -89,6 +117,21 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
     into.sum[i] += v;
     into.sum_sq[i] += v * v;
   }
+  if (total[0].pair_pixel > 0 && width_ >= 2) {  // the medium gathers' pairs: one estimator on both images
+    std::vector<double> rendered(pixels_), accurate(pixels_);
+    std::vector<bool> paired(pixels_);
+    for (std::size_t i = 0; i < pixels_; ++i) {
+      rendered[i] = std::sqrt(pass.pixels[i].MeanSquare());
+      accurate[i] = std::sqrt((pass.pixels[i] + medium[i].pair_delta).MeanSquare());
+      paired[i] = medium[i].pair_pixel > 0 && i % static_cast<std::size_t>(width_) + 1 < static_cast<std::size_t>(width_) &&
+                  medium[i + 1].pair_pixel > 0;
+    }
+    // The paired pixels' accurate image against the whole rendered one, the first price's
+    // estimate: over the paired pixels alone the rendered image's rare large samples, which
+    // the accurate image lacks, make the difference's noise.
+    const double change = NeighbourVariance(accurate, width_, height_, &paired) - NeighbourVariance(rendered, width_, height_);
+    if (std::isfinite(change)) accurate_change_ = change;
+  }
   into.pixel_seconds += timing * pixel_seconds;
   ++into.count;
   for (int kind = 0; kind < 2; ++kind) {
@@ -102,28 +145,18 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
 void EffortPrice::Refresh() {
   const Passes& p = measured();
   const double n = p.count;
-  std::vector<double> pixels(pixels_);
+  double variance = 0;
   if (n >= 2) {
+    std::vector<double> pixels(pixels_);
     for (std::size_t i = 0; i < pixels_; ++i) {  // each pixel's variance over the passes
       double mean = p.sum[i] / n;
       pixels[i] = std::max(0.0, (p.sum_sq[i] - n * mean * mean) / (n - 1));
     }
-  } else {  // one pass: half the squared difference of horizontal neighbours (edges overstate it)
-    pixels.clear();
-    for (int y = 0; y < height_; ++y)
-      for (int x = 0; x + 1 < width_; x += 2) {
-        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
-        const double d = p.sum[i] - p.sum[i + 1];
-        pixels.push_back(d * d / 2);
-      }
-    if (pixels.empty()) return;
+    variance = TrimmedMean(std::move(pixels));  // the mean over pixels of their variance
+  } else {
+    if (width_ < 2) return;
+    variance = NeighbourVariance(p.sum, width_, height_);
   }
-  // The mean over pixels of their variance, the largest thousandth left out.
-  const std::size_t kept = pixels.size() - pixels.size() / 1000;
-  std::nth_element(pixels.begin(), pixels.begin() + static_cast<std::ptrdiff_t>(kept) - 1, pixels.end());
-  double variance = 0;
-  for (std::size_t k = 0; k < kept; ++k) variance += pixels[k];
-  variance /= double(kept);
   const double pixel_cost = p.pixel_seconds / (n * double(pixels_));
   variance_ = variance, pixel_cost_ = pixel_cost;
   for (int kind = 0; kind < 2; ++kind) {
@@ -160,6 +193,11 @@ double EffortPrice::RemainderDemand(std::size_t t) const {
 
 vrlis::EffortModel EffortPrice::Model(int k) const {
   using vrlis::EffortModel;
+  // The accurate model is weighed once, at the first price, from the first passes' pairs
+  // (pair()): the one comparison of it with the rule by one estimator on the same queries. The
+  // passes after measure the model they take only, and a render that changes between the two,
+  // or unlike another render of the scene, pays for the change (docs/maths.md#effort-accurate).
+  if (model_[k] == EffortModel::Accurate) return EffortModel::Accurate;
   const EffortStats& all = gathers_[k];
   // The models' seconds per sample from the first passes only, where each took every gather
   // once in whole batches: a controlled pass takes the image's model in the small batches
@@ -184,21 +222,40 @@ vrlis::EffortModel EffortPrice::Model(int k) const {
     if (!(measured > 0 && taken > 0)) return Change{m};
     return Change{m, samples * excess / measured, samples * (seconds / taken - rule_seconds), share, true};
   };
-  const Change alternatives[] = {
+  // The accurate model's variance from the pairs' image (of the medium gathers only; in the
+  // first priced refresh only), its seconds from the pairs' own.
+  auto accurate_change = [&](int kind) {
+    if (kind != static_cast<int>(GatherKind::Medium) || passes_ != kMinPasses || std::isnan(accurate_change_) ||
+        !(all.accurate_samples > 0))
+      return Change{EffortModel::Accurate};
+    return Change{EffortModel::Accurate, accurate_change_,
+                  samples * (all.accurate_seconds / all.accurate_samples - rule_seconds), 0, true};
+  };
+  Change alternatives[] = {
       change(EffortModel::Cheapest, all.cheapest_excess, all.rule_samples, pilot.cheapest_samples, pilot.cheapest_seconds,
              p.cheapest[k] / switchable),
       change(EffortModel::Mixture, all.mixture_excess, all.mixture_measured, pilot.mixture_samples, pilot.mixture_seconds,
-             p.mixture[k] / switchable)};
+             p.mixture[k] / switchable),
+      accurate_change(k)};
+  // The pairs' image is against the first pass's, whose pilots took the cheapest model and the
+  // mixture: the accurate model's change against the rule adds theirs.
+  alternatives[2].dv += alternatives[0].share * alternatives[0].dv + alternatives[1].share * alternatives[1].dv;
   // The measured variance and cost are of a mix, each model's share of the samples with its
   // change and the rest with the rule's: the states compared whole, not to first order (one
   // model for the whole image is no small change).
   double v_rule = variance_, t_rule = pixel_cost_;
   for (const Change& c : alternatives) v_rule -= c.share * c.dv, t_rule -= c.share * c.dt;
   if (!(v_rule > 0 && t_rule > 0)) return EffortModel::Chosen;  // estimates that contradict the measurement
+  // The accurate model is taken where it pays its margin (kAccurateMargin).
+  auto score = [](const Change& c, double product) {
+    return c.model == EffortModel::Accurate ? product / kAccurateMargin : product;
+  };
   EffortModel best = EffortModel::Chosen;
   double least = v_rule * t_rule;
-  for (const Change& c : alternatives)
-    if (c.known && (v_rule + c.dv) * (t_rule + c.dt) < least) least = (v_rule + c.dv) * (t_rule + c.dt), best = c.model;
+  for (const Change& c : alternatives) {
+    const double v = v_rule + c.dv, product = v * (t_rule + c.dt);
+    if (c.known && v > 0 && score(c, product) < least) least = score(c, product), best = c.model;
+  }
   return best;
 }
 

@@ -1,5 +1,7 @@
 #include "vrlis_integration/gather.hpp"
 
+#include <chrono>
+
 #include <vrlis/core/two_point_direction.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
 #include <vrlis/gather/medium_gather.hpp>
@@ -53,16 +55,23 @@ namespace {
 // the library's batch, so that images do not depend on it): segments and predicted weights
 // on the stack, the scene's visibility as the callback. `effort`: the call's, which says what
 // its statistics measure (whether each gather is decided, whether the mixture is measured).
+// `own`: the gathers' random numbers. `pair`, with stats: each chunk is gathered again under
+// these settings, from the same random numbers, for the statistics alone
+// (EffortStats::pair_delta): its samples are connected, not summed, and the sum and the
+// numbers left for the rest are those of the call without it.
 constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
 template <typename GatherShareOf, typename GatherChunk>
 Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput,
-                       const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
-                       GatherShareOf&& share, GatherChunk&& gather_chunk) {
+                       const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, Rng& own,
+                       GatherShareOf&& share, GatherChunk&& gather_chunk, const vrlis::EffortSettings* pair = nullptr) {
   const bool decided = effort.on && effort.decide;
+  if (!stats) pair = nullptr;
   Spectrum sum;
-  vrlis::EffortTally tally;
+  vrlis::EffortTally tally, pair_tally;
   EffortStats taken;
+  Spectrum pair_sum;
+  double pair_seconds = 0;
   for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
@@ -91,7 +100,16 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (s.over_mixture > 0) taken.mixture_excess += vrlis::Sqr(effort_weight * y) * (s.over_mixture - 1);
       if (split) ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
-    gather_chunk(segments, weights, n, connect, stats ? &tally : nullptr);
+    Rng same = own;
+    gather_chunk(effort, own, segments, weights, n, connect, stats ? &tally : nullptr);
+    if (pair) {
+      auto measure = [&](int i, const vrlis::GatherSample<float>& s, float) {
+        pair_sum += chunk[i].flux * (Connect(scene, s) * share(s));
+      };
+      const auto start = std::chrono::steady_clock::now();
+      gather_chunk(*pair, same, segments, weights, n, measure, &pair_tally);
+      pair_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     for (int i = 0; split && i < n; ++i)
       if (samples[i] > 1) {
         double k = samples[i], mean = sum_y[i] / k;
@@ -112,6 +130,15 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     taken.mixture_samples = double(tally.model_samples[kMixture]);
     taken.mixture_seconds = tally.model_seconds[kMixture];
     if (effort.measure_mixture) taken.mixture_measured = taken.rule_samples;
+    if (pair) {
+      constexpr int kAccurate = static_cast<int>(vrlis::EffortModel::Accurate);
+      taken.accurate_samples = double(pair_tally.model_samples[kAccurate]);
+      taken.accurate_seconds = pair_tally.model_seconds[kAccurate];
+      taken.pair_delta = throughput * (pair_sum + sum * -1.f);
+      // The caller times the whole call, the pair's measuring too: that is not the call's.
+      taken.pair_seconds = pair_seconds;
+      taken.seconds = -pair_seconds;
+    }
     *stats += taken;
   }
   return sum;
@@ -125,7 +152,8 @@ float GatherShareOf(const ConnectionEnd& from, const vrlis::GatherSample<float>&
 // The medium-to-medium sum over the VRLs [first, last).
 Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput,
-                    const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, float bound) {
+                    const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, float bound,
+                    const vrlis::EffortSettings* pair) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
@@ -135,27 +163,30 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
   auto share = [&](const vrlis::GatherSample<float>& s) {
     return GatherShareOf({s.camera_point, {}, false}, s, bound);
   };
-  return SumOverChunks(scene, first, last, throughput, effort, stats, weight_log, share,
-                       [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n, auto& connect,
-                           vrlis::EffortTally* tally) {
-                         vrlis::GatherMediumVrls(method, effort, camera, medium, segments, weights, n,
-                                                 [&] { return own.Uniform(); }, connect, tally);
-                       });
+  return SumOverChunks(
+      scene, first, last, throughput, effort, stats, weight_log, own, share,
+      [&](const vrlis::EffortSettings& settings, Rng& numbers, const vrlis::VrlSegment<float>* segments,
+          const float* weights, int n, auto& connect, vrlis::EffortTally* tally) {
+        vrlis::GatherMediumVrls(method, settings, camera, medium, segments, weights, n,
+                                [&] { return numbers.Uniform(); }, connect, tally);
+      },
+      pair);
 }
 
 }  // namespace
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
-  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr, kUnbounded);
+  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr, kUnbounded,
+                    nullptr);
 }
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput,
                               const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
-                              float bound) {
+                              float bound, const vrlis::EffortSettings* pair) {
   return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats,
-                    weight_log, bound);
+                    weight_log, bound, pair);
 }
 
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
@@ -167,11 +198,12 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
   const ConnectionEnd from{p, nf, true};
   auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, bound); };
   return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, effort, stats,
-                                weight_log, share,
-                                [&](const vrlis::VrlSegment<float>* segments, const float* weights, int n,
+                                weight_log, own, share,
+                                [&](const vrlis::EffortSettings& settings, Rng& numbers,
+                                    const vrlis::VrlSegment<float>* segments, const float* weights, int n,
                                     auto& connect, vrlis::EffortTally* tally) {
-                                  vrlis::GatherSurfaceVrls(method, effort, p, nf, medium, segments, weights, n,
-                                                           [&] { return own.Uniform(); }, connect, tally);
+                                  vrlis::GatherSurfaceVrls(method, settings, p, nf, medium, segments, weights, n,
+                                                           [&] { return numbers.Uniform(); }, connect, tally);
                                 });
 }
 

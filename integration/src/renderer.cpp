@@ -70,6 +70,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   surface_effort.price = price_.price(GatherKind::Surface);
   medium_effort.within = price_.within(GatherKind::Medium);
   surface_effort.within = price_.within(GatherKind::Surface);
+  const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     GatherCount count;
     if (!effort.on) {
@@ -92,11 +93,21 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path
     const double rate = demand > 1 ? std::min(demand, std::max(1.0, effort.ceiling)) : 1.0;
     m.timed = s.timed = price_.timed(choice.Uniform());
+    // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
+    // gather their VRLs under the accurate model, for the statistics alone
+    // (docs/maths.md#effort-accurate).
+    vrlis::EffortSettings pair = m;
+    pair.decide = pair.measure_mixture = false;
+    pair.model = vrlis::EffortModel::Accurate;
+    Rng pairing(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + (x - x % 2), StreamPurpose::EffortPair);
+    const bool paired = pairs_models && m.timed && price_.pair(pairing.Uniform());
     const auto p0 = m.timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate);
-    if (m.timed) pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * Since(p0)), std::memory_order_relaxed);
+    Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
+    const double pixel_seconds = m.timed ? Since(p0) - count.medium_effort.pair_seconds : 0;
+    if (m.timed) pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * std::max(0.0, pixel_seconds)), std::memory_order_relaxed);
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
+    count.medium_effort.pair_pixel = paired ? 1 : 0;
     learned->medium[i] = count.medium_effort;
     learned->surface[i] = count.surface_effort;
     learned->remainder[i] = count.remainder;

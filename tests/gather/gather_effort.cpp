@@ -250,8 +250,8 @@ std::vector<std::pair<int, Real>> Samples(const Setup& s, vrlis::GatherSamplers 
 
 // A call that does not decide (EffortSettings::decide false) takes every gather once with
 // weight 1, sample for sample as without the control, at any price; with `auto` and the
-// cheapest model or the mixture asked for, that model's samples. The same prices change the samples of a
-// call that decides (so the flag is what keeps them).
+// cheapest model, the mixture or the accurate one asked for, that model's samples. The same
+// prices change the samples of a call that decides (so the flag is what keeps them).
 TEST_CASE("a call that does not decide takes every gather once, as without the control", "[gather][effort]") {
   Setup s = MakeSetup();
   auto [lo, hi] = BoundRange(s);
@@ -270,7 +270,9 @@ TEST_CASE("a call that does not decide takes every gather once, as without the c
       CHECK(Samples(s, method, vrlis::EffortSettings{true, price}) != off);
     }
     for (auto [model, name] : {std::pair{vrlis::EffortModel::Cheapest, "equiangular"},
-                               std::pair{vrlis::EffortModel::Mixture, "cauchy-mixture"}}) {
+                               std::pair{vrlis::EffortModel::Mixture, "cauchy-mixture"},
+                               std::pair{vrlis::EffortModel::Accurate, "full-product+marginal"}}) {
+      INFO(name);
       undecided.model = model;
       CHECK(Samples(s, automatic, undecided) == Samples(s, *vrlis::ParseGatherSamplers(name), {}));
     }
@@ -294,10 +296,11 @@ TEST_CASE("auto with the effort control takes the model its demand pays for", "[
   CHECK(Samples(s, automatic, middle) != Samples(s, *vrlis::ParseGatherSamplers("equiangular"), middle));
   vrlis::EffortSettings accurate{true, vrlis::Sqr(50 * 20 / lo)};  // every demand above 2.3 ceilings
   CHECK(Samples(s, automatic, accurate) == Samples(s, *vrlis::ParseGatherSamplers("full-product+marginal"), accurate));
-  // A call that asks for the cheapest model or the mixture takes it below the accurate tier,
-  // priced or not, and the accurate model above it.
+  // A call that asks for the cheapest model, the mixture or the accurate one takes it below
+  // the accurate tier, priced or not, and the accurate model above it.
   for (auto [model, name] : {std::pair{vrlis::EffortModel::Cheapest, "equiangular"},
-                             std::pair{vrlis::EffortModel::Mixture, "cauchy-mixture"}})
+                             std::pair{vrlis::EffortModel::Mixture, "cauchy-mixture"},
+                             std::pair{vrlis::EffortModel::Accurate, "full-product+marginal"}})
     for (vrlis::EffortSettings e : {vrlis::EffortSettings{true}, middle, accurate}) {
       e.model = model;
       const char* expected = e.price == accurate.price ? "full-product+marginal" : name;

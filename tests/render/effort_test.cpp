@@ -19,6 +19,10 @@
 // - `auto` takes a model cheaper than its rule where the variance it adds is worth less than
 //   the time it saves: in room (gathers without variance) equiangular or the mixture, and not
 //   equiangular in the bidirectional scene at g = 0.9;
+// - `auto` takes the accurate model where its variance is worth its time: in the
+//   bidirectional scene at g = 0, not in room; on synthetic passes where the first pass's pairs
+//   show it worth its time, within a margin, and then for good; a pair changes no gather and its
+//   pixel delta is what the accurate model on the same random numbers adds instead;
 // - the price compares the image's states whole: on synthetic passes it takes the mixture
 //   where its added variance and saved time lower V x T (also where first order says the
 //   rule) and the rule where they raise it;
@@ -42,6 +46,8 @@
 
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis_integration/camera_paths.hpp>
+#include <vrlis_integration/gather.hpp>
+#include <vrlis_integration/light_paths.hpp>
 #include <vrlis_integration/weight_log.hpp>
 #include <vrlis_scenes/scenes.hpp>
 
@@ -230,12 +236,14 @@ TEST_CASE("effort: the remainder is split where its paths hold the noise, never 
 TEST_CASE("effort: auto takes the model whose variance is worth less than the time it saves",
           "[render][effort][timing]") {
   using vrlis::EffortModel;
-  auto model = [](const char* scene, float g) {
+  auto model = [](const char* scene, float g, int size = 16, bool fixed_lattice = false) {
     vrlis::scenes::MediumOverrides medium;
     medium.g = g;
     auto built = vrlis::scenes::BuildScene(scene, medium);
     REQUIRE(built);
-    vrlis::integration::RenderSettings s = Settings(*built, 16, true);
+    if (fixed_lattice)  // as EffortScene: all of the noise the gathers'
+      for (vrlis::integration::PointLight& l : built->scene.lights.points) l.rotate_lattice = false;
+    vrlis::integration::RenderSettings s = Settings(*built, size, true);
     s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
     vrlis::integration::VrlRenderer r(built->scene, s);
     for (std::uint64_t pass = 0; pass < 5; ++pass) r.RenderPass(1, pass, nullptr);
@@ -248,6 +256,54 @@ TEST_CASE("effort: auto takes the model whose variance is worth less than the ti
   INFO("room: model " << static_cast<int>(room));
   CHECK((room == EffortModel::Cheapest || room == EffortModel::Mixture));
   CHECK(model("bidirectional", 0.9f) != EffortModel::Cheapest);  // equiangular sampling there has many times a fit's
+  // At g = 0 the accurate model has a sixth of the rule's variance at twice its time (at the
+  // study's size: the first pass's pixels are the estimate's; with the light's lattice fixed,
+  // whose rotation adds noise that no model removes).
+  CHECK(model("bidirectional", 0.f, 48, true) == EffortModel::Accurate);
+  CHECK(room != EffortModel::Accurate);
+}
+
+// A pair (GatherMediumToMedium's `pair`) is for the statistics alone: the call returns what it
+// returns without one and leaves the same numbers to the rest of the path, and its pixel delta
+// is what the accurate model, taken on the same numbers, would have added instead.
+TEST_CASE("effort: a pair changes no gather and measures the accurate model on the same numbers",
+          "[render][effort]") {
+  using namespace vrlis::integration;
+  auto built = EffortScene("bidirectional");
+  REQUIRE(built);
+  const Scene& scene = built->scene;
+  const std::vector<Vrl> vrls = TraceLightPaths(scene, built->transport, 32, 1, 0);
+  REQUIRE(vrls.size() > 8);
+  const vrlis::GatherSamplers method = *vrlis::ParseGatherSamplers("auto");
+  vrlis::EffortSettings rule;
+  rule.on = true, rule.decide = false;
+  vrlis::EffortSettings accurate = rule;
+  accurate.model = vrlis::EffortModel::Accurate;
+  const Spectrum throughput(0.5f);
+  int segments = 0;
+  for (int pixel = 0; pixel < 16; ++pixel) {
+    const Ray ray = scene.camera.Generate(4.f * (pixel % 4) + 2.f, 4.f * (pixel / 4) + 2.f, 16, 16);
+    SurfaceHit hit;
+    const bool found = scene.Intersect(ray, &hit);
+    const CameraSegment seg{ray, scene.medium.Clip(ray, found ? hit.t : kInfinity)};
+    if (seg.iv.Empty()) continue;
+    ++segments;
+    Rng a(1, 0, static_cast<std::uint64_t>(pixel), StreamPurpose::Camera), b = a, c = a;
+    EffortStats plain, paired;
+    const Spectrum alone = GatherMediumToMedium(method, scene, seg, vrls, a, nullptr, throughput, rule, &plain);
+    const Spectrum with_pair =
+        GatherMediumToMedium(method, scene, seg, vrls, b, nullptr, throughput, rule, &paired, nullptr, kUnbounded, &accurate);
+    const Spectrum instead = GatherMediumToMedium(method, scene, seg, vrls, c, nullptr, throughput, accurate);
+    CHECK(std::memcmp(&alone, &with_pair, sizeof(Spectrum)) == 0);
+    CHECK(a.Uniform() == b.Uniform());
+    CHECK(paired.accurate_samples > 0);
+    CHECK(paired.pair_seconds > 0);
+    const Spectrum measured = throughput * with_pair + paired.pair_delta, expected = throughput * instead;
+    INFO("pixel " << pixel << ": accurate " << expected.r << ", rule + delta " << measured.r);
+    CHECK(measured.r == Approx(expected.r).epsilon(1e-4).margin(1e-9));
+    CHECK(measured.b == Approx(expected.b).epsilon(1e-4).margin(1e-9));
+  }
+  CHECK(segments > 8);
 }
 
 // Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (variance V = 0.04 / 3 over the
@@ -284,6 +340,48 @@ TEST_CASE("effort: the price takes the model whose variance x time is least", "[
   CHECK(model(0.002) == EffortModel::Mixture);
   CHECK(model(0.007) == EffortModel::Mixture);  // the rule to first order
   CHECK(model(0.02) == EffortModel::Chosen);
+}
+
+// Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (neighbours' variance 0.02) at 5 us
+// a pixel, each pixel taking 10 samples of the rule at 400 ns; the first pass pairs them with
+// the accurate model, whose pixels would have been 1 +- 0.1 x `spread` (variance 0.02 x
+// spread^2) at `seconds` a sample. With a change of the model worth kAccurateMargin, the
+// accurate model pays where 0.02 spread^2 (5 us + 10 (seconds - 400 ns)) < 0.8 x 0.02 x 5 us,
+// and it is decided at the first price only.
+TEST_CASE("effort: the accurate model is taken where its pairs' image is worth the time, once",
+          "[render][effort]") {
+  using vrlis::EffortModel;
+  using vrlis::integration::EffortStats;
+  using vrlis::integration::Spectrum;
+  auto model = [](double spread, double seconds, int passes, bool paired) {
+    constexpr int kSide = 8;
+    vrlis::integration::EffortPrice price(kSide, kSide, 1.0);  // every pixel timed
+    for (int pass = 0; pass < passes; ++pass) {
+      auto& pixels = price.BeginPass();
+      vrlis::integration::Film film(kSide, kSide);
+      for (std::size_t i = 0; i < pixels.medium.size(); ++i) {
+        const float value = i % 2 ? 0.9f : 1.1f;
+        film.pixels[i] = Spectrum(value);
+        EffortStats p;
+        p.calls = 1, p.gathers = 10, p.seconds = 5e-6, p.predicted = p.measured = 1;
+        p.rule_samples = 10, p.rule_seconds = 10 * 400e-9;
+        if (pass == 0 && paired) {
+          p.accurate_samples = 10, p.accurate_seconds = 10 * seconds, p.pair_seconds = 1e-6, p.pair_pixel = 1;
+          p.pair_delta = Spectrum(static_cast<float>((value - 1) * (spread - 1)));
+        }
+        pixels.medium[i] = p;
+        pixels.surface[i] = {};
+        pixels.remainder[i] = {};
+      }
+      price.Add(film, kSide * kSide * 5e-6);
+    }
+    return price.model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+  };
+  CHECK(model(0.3, 2e-6, 1, true) == EffortModel::Accurate);   // V / 11 at 4.2 times T
+  CHECK(model(0.3, 6e-6, 1, true) == EffortModel::Chosen);     // V / 11 at 12 times T
+  CHECK(model(0.9, 5e-7, 1, true) == EffortModel::Chosen);     // V x 0.81 at 1.2 times T: within the margin
+  CHECK(model(0.3, 2e-6, 1, false) == EffortModel::Chosen);    // no pairs, no measure of it
+  CHECK(model(0.3, 2e-6, 6, true) == EffortModel::Accurate);   // kept in the passes after
 }
 
 TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort][timing]") {

@@ -51,7 +51,7 @@ struct EffortSettings {
   // With the `auto` sampler: the model of this call's gathers below the accurate tier, auto's
   // per-query rule (Chosen), whose prediction and dispatch cost as much as an equiangular
   // gather and which knows the variance of one gather only, or one model for the whole image:
-  // the cheapest or the mixture. The renderer's choice from earlier passes
+  // the cheapest, the mixture or the accurate one. The renderer's choice from earlier passes
   // (docs/maths.md#effort-cheapest); honoured with the control on, priced or not.
   EffortModel model = EffortModel::Chosen;
   // With the `auto` sampler: the rule's samples also carry their density over the mixture's
@@ -124,7 +124,7 @@ inline double EffortCallRate(const EffortSettings& e) {
 // (EffortSettings::model).
 inline EffortModel ChooseEffortModel(const EffortSettings& e, double demand) {
   if (EffortPriced(e) && SplitDemand(e, demand) >= e.accurate * e.ceiling) return EffortModel::Accurate;
-  return e.on && e.model != EffortModel::Accurate ? e.model : EffortModel::Chosen;
+  return e.on ? e.model : EffortModel::Chosen;
 }
 
 // floor(q + u) for u uniform in [0, 1): q samples on average, stochastically rounded.

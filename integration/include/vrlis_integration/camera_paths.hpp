@@ -66,10 +66,12 @@ Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, bool timed
 // pass's VPLs: with the transport's vpl_bound above 0 they share the connections to diffuse
 // points with the remainder whether or not the pass has any.
 // `remainder_rate`: the remainder's paths per camera vertex, on average (stochastically
-// rounded, each weighted 1 / rate; 1: one path, no number drawn).
+// rounded, each weighted 1 / rate; 1: one path, no number drawn). `medium_pair`: the
+// medium-to-medium gathers' statistics-only pair (GatherMediumToMedium).
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls,
                      const VplSet& vpls, Ray ray,
                      Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort = {},
-                     const vrlis::EffortSettings& surface_effort = {}, double remainder_rate = 1);
+                     const vrlis::EffortSettings& surface_effort = {}, double remainder_rate = 1,
+                     const vrlis::EffortSettings* medium_pair = nullptr);
 
 }  // namespace vrlis::integration

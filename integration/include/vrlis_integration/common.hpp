@@ -51,7 +51,7 @@ struct Ray {
 
 // A PCG32 stream named by (seed, pass, index, purpose): never by a thread, so images do
 // not depend on the thread count.
-enum class StreamPurpose : std::uint64_t { Camera = 1, LightPath = 2, LatticeRotation = 3, EffortModel = 4 };
+enum class StreamPurpose : std::uint64_t { Camera = 1, LightPath = 2, LatticeRotation = 3, EffortModel = 4, EffortPair = 5 };
 
 inline std::uint64_t SplitMix64(std::uint64_t x) {
   x += 0x9e3779b97f4a7c15ull;

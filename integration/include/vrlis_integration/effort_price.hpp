@@ -8,6 +8,7 @@
 // after rendering it.
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <vrlis/gather/effort.hpp>
@@ -34,7 +35,11 @@ namespace vrlis::integration {
 // y), the sums of w y^2 (w - 1) over the rouletted (w > 1) and the split (w < 1): estimates of
 // the variance the decisions add and remove against every gather taken once
 // (docs/maths.md#effort-decide). `measured` counts the decided calls' samples only, as
-// `predicted` does.
+// `predicted` does. Of the calls paired with a statistics-only call of the same VRLs under
+// the accurate model (GatherMediumToMedium's `pair`): that call's samples and their seconds,
+// its seconds (not the pixel's), and how much it would have changed the pixel's value
+// (docs/maths.md#effort-accurate); of a pixel, whether the renderer paired its calls (1) or
+// not (0).
 struct EffortStats {
   std::uint64_t gathers = 0;
   double seconds = 0, sample_seconds = 0, predicted = 0, measured = 0;
@@ -44,6 +49,8 @@ struct EffortStats {
   double cheapest_excess = 0, mixture_excess = 0, mixture_measured = 0;
   double rule_samples = 0, rule_seconds = 0, cheapest_samples = 0, cheapest_seconds = 0;
   double mixture_samples = 0, mixture_seconds = 0;
+  double accurate_samples = 0, accurate_seconds = 0, pair_seconds = 0, pair_pixel = 0;
+  Spectrum pair_delta;
   void operator+=(const EffortStats& o) {
     gathers += o.gathers, seconds += o.seconds, sample_seconds += o.sample_seconds;
     predicted += o.predicted, measured += o.measured;
@@ -54,6 +61,8 @@ struct EffortStats {
     rule_samples += o.rule_samples, rule_seconds += o.rule_seconds;
     cheapest_samples += o.cheapest_samples, cheapest_seconds += o.cheapest_seconds;
     mixture_samples += o.mixture_samples, mixture_seconds += o.mixture_seconds;
+    accurate_samples += o.accurate_samples, accurate_seconds += o.accurate_seconds;
+    pair_seconds += o.pair_seconds, pair_pixel += o.pair_pixel, pair_delta += o.pair_delta;
   }
 };
 
@@ -131,9 +140,10 @@ class EffortPrice {
   double remainder_demand(int x, int y) const { return remainder_demand_[Tile(x, y)]; }
   // The model of `auto`'s gathers of this kind at a pixel in this pass
   // (vrlis::EffortSettings::model), u uniform in [0, 1) drawn for the pixel: of the rule, the
-  // cheapest model and the mixture, the one whose variance over the rule's (estimated over
-  // the image from the rule's own samples) is worth the least against the seconds it saves
-  // or costs (docs/maths.md#effort-cheapest); where that is not the rule, the rule with
+  // cheapest model, the mixture and the accurate model, the one whose variance over the
+  // rule's (estimated over the image from the rule's own samples, the accurate model's from
+  // the pairs) is worth the least against the seconds it saves or costs
+  // (docs/maths.md#effort-cheapest); where that is not the rule, the rule with
   // probability kExplore, which keeps the estimates learning. Before any price, the cheapest
   // model and the mixture each with probability kPilot (their seconds are measured once).
   vrlis::EffortModel model(GatherKind kind, double u) const {
@@ -150,6 +160,21 @@ class EffortPrice {
     return u < kMeasure || model_[static_cast<int>(kind)] != vrlis::EffortModel::Chosen;
   }
   static constexpr double kExplore = 1.0 / 512, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
+  // Whether a pixel of `auto` gathers its medium-to-medium VRLs a second time under the
+  // accurate model, for the statistics alone (the renderer's pair; EffortStats::pair_delta), u
+  // uniform in [0, 1) drawn for the pixel and its horizontal neighbour alike (x and x + 1, x
+  // even): in the first kMinPasses passes, a kPairShare of the neighbours. The image had their
+  // gathers taken the accurate model and the image rendered give the accurate model's variance
+  // by the same estimator (docs/maths.md#effort-accurate). A share: in a pass of nothing but
+  // gathers a pair costs several times the pixel, and a short render (8 passes of room in the
+  // study) pays for the first pass's.
+  bool pair(double u) const { return passes_ < kMinPasses && u < kPairShare; }
+  static constexpr double kPairShare = 1.0 / 4;
+  // A change of the image's model to or from the accurate one is made where its predicted
+  // V x T is below kAccurateMargin of the other's: the rule's and the accurate model's
+  // variances differ many-fold, and a render that changes between them often, or unlike
+  // another render of the scene, is charged for the change.
+  static constexpr double kAccurateMargin = 0.8;
   // Whether a pixel's gathers of this kind are decided one by one in this pass
   // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
   // image's earlier decided calls, the decisions' seconds exceed what the variance they save
@@ -213,6 +238,10 @@ class EffortPrice {
   double price_[2] = {0, 0};
   vrlis::EffortModel model_[2] = {vrlis::EffortModel::Chosen, vrlis::EffortModel::Chosen};
   bool decisions_pay_[2] = {true, true};
+  // The variance of a pixel per pass had the medium-to-medium gathers of the first pass taken
+  // the accurate model, less that of the image rendered (both by neighbouring pixels'
+  // differences); NaN before a pass paired them.
+  double accurate_change_ = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> call_demand_[2], remainder_demand_;
   // This pass's stats summed per tile and kind, of the pixels that decided their gathers under a
   // price and of the rest (Add).

@@ -43,11 +43,13 @@ Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, 
 // predicted contribution throughput x flux; `stats`, if set, adds what the price learns from;
 // `weight_log`, if set, records every sample taken (weight_log.hpp). Each sample's connection
 // is taken up to the geometry term `bound` (share.hpp; the remainder carries the rest).
+// `pair`, with stats: the same VRLs are also gathered under these settings, on the same
+// random numbers, for the statistics alone, not the radiance (EffortStats::pair_delta).
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
                               Spectrum throughput = Spectrum(1.f), const vrlis::EffortSettings& effort = {},
                               EffortStats* stats = nullptr, WeightLog* weight_log = nullptr,
-                              float bound = kUnbounded);
+                              float bound = kUnbounded, const vrlis::EffortSettings* pair = nullptr);
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
