@@ -175,7 +175,8 @@ void EffortPrice::Refresh() {
                        : 0;
   }
   for (int kind = 0; kind < 2; ++kind) {
-    model_[kind] = Model(kind);
+    weighing_[kind] = WeighModels(kind);
+    model_[kind] = Model(kind, weighing_[kind]);
     decisions_pay_[kind] = DecisionsPay(kind);
     for (std::size_t tile = 0; tile < call_demand_[kind].size(); ++tile) call_demand_[kind][tile] = CallDemand(kind, tile);
   }
@@ -191,13 +192,8 @@ double EffortPrice::RemainderDemand(std::size_t t) const {
   return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
 }
 
-vrlis::EffortModel EffortPrice::Model(int k) const {
-  using vrlis::EffortModel;
-  // The accurate model is weighed once, at the first price, from the first passes' pairs
-  // (pair()): the one comparison of it with the rule by one estimator on the same queries. The
-  // passes after measure the model they take only, and a render that changes between the two,
-  // or unlike another render of the scene, pays for the change (docs/maths.md#effort-accurate).
-  if (model_[k] == EffortModel::Accurate) return EffortModel::Accurate;
+EffortPrice::ModelWeighing EffortPrice::WeighModels(int k) const {
+  ModelWeighing w;
   const EffortStats& all = gathers_[k];
   // The models' seconds per sample from the first passes only, where each took every gather
   // once in whole batches: a controlled pass takes the image's model in the small batches
@@ -207,54 +203,54 @@ vrlis::EffortModel EffortPrice::Model(int k) const {
   const double switchable = p.switchable[k];
   if (!(all.rule_samples > all.mixture_measured && pilot.rule_samples > pilot.mixture_measured && switchable > 0 &&
         variance_ > 0 && pixel_cost_ > 0))
-    return EffortModel::Chosen;
+    return w;
   // Per pixel and pass, what a model changes against the rule were every sample below the
   // accurate tier taken with it: the variance it adds (estimated from the rule's samples) and
   // its seconds over the rule's; and its share of those samples in the measured passes.
   const double samples = switchable / (p.count * double(pixels_));
   const double rule_seconds = pilot.rule_seconds / (pilot.rule_samples - pilot.mixture_measured);
-  struct Change {
-    EffortModel model;
-    double dv = 0, dt = 0, share = 0;
-    bool known = false;
+  auto change = [&](ModelChange& c, double excess, double measured, double taken, double seconds, double share) {
+    if (!(measured > 0 && taken > 0)) return;
+    c.dv = samples * excess / measured, c.dt = samples * (seconds / taken - rule_seconds), c.share = share, c.known = true;
   };
-  auto change = [&](EffortModel m, double excess, double measured, double taken, double seconds, double share) {
-    if (!(measured > 0 && taken > 0)) return Change{m};
-    return Change{m, samples * excess / measured, samples * (seconds / taken - rule_seconds), share, true};
-  };
+  change(w.cheapest, all.cheapest_excess, all.rule_samples, pilot.cheapest_samples, pilot.cheapest_seconds,
+         p.cheapest[k] / switchable);
+  change(w.mixture, all.mixture_excess, all.mixture_measured, pilot.mixture_samples, pilot.mixture_seconds,
+         p.mixture[k] / switchable);
   // The accurate model's variance from the pairs' image (of the medium gathers only; in the
-  // first priced refresh only), its seconds from the pairs' own.
-  auto accurate_change = [&](int kind) {
-    if (kind != static_cast<int>(GatherKind::Medium) || passes_ != kMinPasses || std::isnan(accurate_change_) ||
-        !(all.accurate_samples > 0))
-      return Change{EffortModel::Accurate};
-    return Change{EffortModel::Accurate, accurate_change_,
+  // first priced refresh only), its seconds from the pairs' own. The pairs' image is against
+  // the first pass's, whose pilots took the cheapest model and the mixture: the accurate
+  // model's change against the rule adds theirs.
+  if (k == static_cast<int>(GatherKind::Medium) && passes_ == kMinPasses && !std::isnan(accurate_change_) &&
+      all.accurate_samples > 0)
+    w.accurate = {vrlis::EffortModel::Accurate,
+                  accurate_change_ + w.cheapest.share * w.cheapest.dv + w.mixture.share * w.mixture.dv,
                   samples * (all.accurate_seconds / all.accurate_samples - rule_seconds), 0, true};
-  };
-  Change alternatives[] = {
-      change(EffortModel::Cheapest, all.cheapest_excess, all.rule_samples, pilot.cheapest_samples, pilot.cheapest_seconds,
-             p.cheapest[k] / switchable),
-      change(EffortModel::Mixture, all.mixture_excess, all.mixture_measured, pilot.mixture_samples, pilot.mixture_seconds,
-             p.mixture[k] / switchable),
-      accurate_change(k)};
-  // The pairs' image is against the first pass's, whose pilots took the cheapest model and the
-  // mixture: the accurate model's change against the rule adds theirs.
-  alternatives[2].dv += alternatives[0].share * alternatives[0].dv + alternatives[1].share * alternatives[1].dv;
   // The measured variance and cost are of a mix, each model's share of the samples with its
   // change and the rest with the rule's: the states compared whole, not to first order (one
   // model for the whole image is no small change).
-  double v_rule = variance_, t_rule = pixel_cost_;
-  for (const Change& c : alternatives) v_rule -= c.share * c.dv, t_rule -= c.share * c.dt;
-  if (!(v_rule > 0 && t_rule > 0)) return EffortModel::Chosen;  // estimates that contradict the measurement
+  w.v_rule = variance_, w.t_rule = pixel_cost_;
+  for (const ModelChange* c : {&w.cheapest, &w.mixture, &w.accurate}) w.v_rule -= c->share * c->dv, w.t_rule -= c->share * c->dt;
+  return w;
+}
+
+vrlis::EffortModel EffortPrice::Model(int k, const ModelWeighing& w) const {
+  using vrlis::EffortModel;
+  // The accurate model is weighed once, at the first price, from the first passes' pairs
+  // (pair()): the one comparison of it with the rule by one estimator on the same queries. The
+  // passes after measure the model they take only, and a render that changes between the two,
+  // or unlike another render of the scene, pays for the change (docs/maths.md#effort-accurate).
+  if (model_[k] == EffortModel::Accurate) return EffortModel::Accurate;
+  if (!(w.v_rule > 0 && w.t_rule > 0)) return EffortModel::Chosen;  // none, or estimates that contradict the measurement
   // The accurate model is taken where it pays its margin (kAccurateMargin).
-  auto score = [](const Change& c, double product) {
+  auto score = [](const ModelChange& c, double product) {
     return c.model == EffortModel::Accurate ? product / kAccurateMargin : product;
   };
   EffortModel best = EffortModel::Chosen;
-  double least = v_rule * t_rule;
-  for (const Change& c : alternatives) {
-    const double v = v_rule + c.dv, product = v * (t_rule + c.dt);
-    if (c.known && v > 0 && score(c, product) < least) least = score(c, product), best = c.model;
+  double least = w.v_rule * w.t_rule;
+  for (const ModelChange* c : {&w.cheapest, &w.mixture, &w.accurate}) {
+    const double v = w.v_rule + c->dv, product = v * (w.t_rule + c->dt);
+    if (c->known && v > 0 && score(*c, product) < least) least = score(*c, product), best = c->model;
   }
   return best;
 }

@@ -192,12 +192,29 @@ class EffortPrice {
   }
   static constexpr double kCalibrate = 1.0 / 8, kTrial = 1.0 / 4;
   int passes() const { return passes_; }
+  // What the image's model was chosen from at the last refresh, per pixel and pass: the
+  // variance and seconds of the rule (the measured mix of models less the others' shares),
+  // and each alternative's change of both against it and its share of the measured samples;
+  // `known` false where it could not be estimated. The variances come from the image and the
+  // models' samples, the seconds from the clock.
+  struct ModelChange {
+    vrlis::EffortModel model = vrlis::EffortModel::Chosen;
+    double dv = 0, dt = 0, share = 0;
+    bool known = false;
+  };
+  struct ModelWeighing {
+    double v_rule = 0, t_rule = 0;  // 0 where the measurements gave no estimate
+    ModelChange cheapest{vrlis::EffortModel::Cheapest}, mixture{vrlis::EffortModel::Mixture},
+        accurate{vrlis::EffortModel::Accurate};
+  };
+  const ModelWeighing& model_weighing(GatherKind kind) const { return weighing_[static_cast<int>(kind)]; }
 
  private:
   void Refresh();
   // What Refresh decides for the next pass: per kind, the image's model and whether the
   // decisions pay, per kind and tile the call demand, per tile the remainder's.
-  vrlis::EffortModel Model(int kind) const;
+  ModelWeighing WeighModels(int kind) const;
+  vrlis::EffortModel Model(int kind, const ModelWeighing& w) const;
   bool DecisionsPay(int kind) const;
   double CallDemand(int kind, std::size_t tile) const;
   double RemainderDemand(std::size_t tile) const;
@@ -237,6 +254,7 @@ class EffortPrice {
   EffortStats decided_[2], undecided_[2];  // of those passes' pixels that decided their gathers, and the rest
   double price_[2] = {0, 0};
   vrlis::EffortModel model_[2] = {vrlis::EffortModel::Chosen, vrlis::EffortModel::Chosen};
+  ModelWeighing weighing_[2];
   bool decisions_pay_[2] = {true, true};
   // The variance of a pixel per pass had the medium-to-medium gathers of the first pass taken
   // the accurate model, less that of the image rendered (both by neighbouring pixels'
