@@ -1,8 +1,8 @@
 #pragma once
-// Efficiency, 1 / (per-pass variance x seconds per pass), and confidence intervals for the
-// ratio of two samplers' efficiencies from independent replicate runs: a delete-one
-// jackknife over replicates of the log ratio, with Student's t on R - 1 degrees of freedom
-// (docs/compare/README.md says why this and not a bootstrap over passes).
+// Efficiency, 1 / (per-pass variance x seconds per pass) averaged over replicates, and
+// confidence intervals for the ratio of two samplers' efficiencies from independent replicate
+// runs: a delete-one jackknife over replicates of the log ratio, with Student's t on R - 1
+// degrees of freedom (docs/compare/README.md says why this and not a bootstrap over passes).
 #include <vector>
 
 namespace vrlis::compare {
@@ -18,9 +18,13 @@ struct RatioInterval {
   bool Above(double x) const { return low > x; }
 };
 
-// Pooled over the replicates.
+// Means over the replicates.
 double PooledVariance(const Replicates& r);
 double PooledSeconds(const Replicates& r);
+// 1 / the mean over replicates of variance x seconds: a replicate's squared error at one
+// second of rendering, whose mean is what a user who cannot choose the seed gets. Not
+// 1 / (PooledVariance x PooledSeconds), which charges replicates that differ (the effort
+// control's choices) for a variance of some and the time of others (docs/compare/README.md).
 double Efficiency(const Replicates& r);
 
 // Efficiency of a over efficiency of b. The two must come from the same replicate seeds
