@@ -94,7 +94,7 @@ double Rmse(const vrlis::integration::Film& a, const vrlis::integration::Film& b
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scene_name, sampler = "cauchy-sum", integrator = "vrl", gather = "all", out = "render.exr", reference;
+  std::string scene_name, sampler = "auto", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
   std::optional<float> vrl_bound;
