@@ -95,12 +95,17 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     m.timed = s.timed = price_.timed(choice.Uniform());
     // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
     // gather their VRLs under the accurate model, for the statistics alone
-    // (docs/maths.md#effort-accurate).
-    vrlis::EffortSettings pair = m;
-    pair.decide = pair.measure_mixture = false;
-    pair.model = vrlis::EffortModel::Accurate;
-    Rng pairing(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + (x - x % 2), StreamPurpose::EffortPair);
-    const bool paired = pairs_models && m.timed && price_.pair(pairing.Uniform());
+    // (docs/maths.md#effort-accurate); the pairing's stream is drawn only where it can pair.
+    const bool paired =
+        pairs_models && m.timed && price_.pairs() &&
+        price_.pair(Rng(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + (x - x % 2), StreamPurpose::EffortPair)
+                        .Uniform());
+    vrlis::EffortSettings pair;
+    if (paired) {
+      pair = m;
+      pair.decide = pair.measure_mixture = false;
+      pair.model = vrlis::EffortModel::Accurate;
+    }
     const auto p0 = m.timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
     const double pixel_seconds = m.timed ? Since(p0) - count.medium_effort.pair_seconds : 0;
