@@ -40,6 +40,30 @@ TEST_CASE("RsqrtLanes<float> is within 2 ulp over the normal floats", "[lib][lan
   CHECK(worst <= 2 * ulp);
 }
 
+TEST_CASE("The lanes' Accuracy::Fit is within 1e-4 relative (sine and cosine: of 1, and relative near 0)",
+          "[lib][lane_math]") {
+  using vrlis::Accuracy;
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> wide(-100.0f, 100.0f), small(-0.785f, 0.785f), mantissa(1.0f, 2.0f),
+      range(-87.3f, 88.0f);
+  double sincos = 0, sin_near_0 = 0, rsqrt = 0, exp = 0;
+  for (int i = 0; i < 1000000; ++i) {
+    float x = wide(rng);
+    vrlis::SinCosPair<float> p = vrlis::SinCosLanes<Accuracy::Fit>(x);
+    sincos = std::max({sincos, std::abs(p.sin - std::sin(double(x))), std::abs(p.cos - std::cos(double(x)))});
+    float y = std::ldexp(small(rng), -(i % 40));
+    sin_near_0 = std::max(sin_near_0, std::abs(vrlis::SinCosLanes<Accuracy::Fit>(y).sin / std::sin(double(y)) - 1));
+    float z = std::ldexp(mantissa(rng), i % 250 - 125);
+    rsqrt = std::max(rsqrt, std::abs(vrlis::RsqrtLanes<Accuracy::Fit>(z) * std::sqrt(double(z)) - 1));
+    float e = range(rng);
+    exp = std::max(exp, std::abs(vrlis::ExpLanes<Accuracy::Fit>(e) / std::exp(double(e)) - 1));
+  }
+  CHECK(sincos <= 1e-4);
+  CHECK(sin_near_0 <= 1e-4);
+  CHECK(rsqrt <= 1e-4);
+  CHECK(exp <= 1e-4);
+}
+
 namespace {
 // |got - exact| in units of the float ulp at exact (exact from double).
 double FloatUlps(float got, double exact) {

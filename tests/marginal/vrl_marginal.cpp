@@ -391,9 +391,10 @@ TEMPLATE_TEST_CASE("VrlMarginal: degenerate and invalid input", "", float, doubl
 }
 
 // The fit runs its nodes in lanes: in float with the inline arctangent, sine, square root
-// and exponential of core/lane_math.hpp, in double with the standard functions. The fitted
-// density at every node must agree between the two to float's accuracy of the geometry
-// (relative to the largest node: the smallest ones sit at the floor).
+// and exponential of core/lane_math.hpp (the rule's to Accuracy::Fit, 1e-4), in double with
+// the standard functions. The fitted density at every node must agree between the two to
+// that accuracy, times the lobes' steepness at |g| = 0.9 (relative to the largest node: the
+// smallest ones sit at the floor).
 TEST_CASE("VrlMarginal: the float fit in lanes agrees with the double fit", "") {
   double worst = 0;
   int compared = 0;
@@ -414,5 +415,5 @@ TEST_CASE("VrlMarginal: the float fit in lanes agrees with the double fit", "") 
     }
   }
   INFO("configurations " << compared << ", largest gap relative to the largest node " << worst);
-  CHECK(worst < 3e-4);  // measured 3.0e-5
+  CHECK(worst < 2e-3);  // measured 3.1e-4 (3.0e-5 with the rule at full float accuracy)
 }

@@ -22,10 +22,10 @@ namespace detail {
 // The transmittance factor at the offset whose half angle has sine and cosine `half`:
 // pole = sin and cos of half the lower pole's offset, depth_scale = sigma_t h / pole.cos
 // (see above). Branch-free, for loops over offsets.
-template <typename Real>
+template <Accuracy kAccuracy = Accuracy::Full, typename Real>
 [[gnu::always_inline]] inline Real SegmentTransmittance(SinCosPair<Real> half, SinCosPair<Real> pole, Real depth_scale) {
   Real cos_half = half.cos * pole.cos + half.sin * pole.sin;  // cos(x/2) by the subtraction formula
-  return ExpLanes(-depth_scale * half.sin / std::max(cos_half, Real(0)));
+  return ExpLanes<kAccuracy>(-depth_scale * half.sin / std::max(cos_half, Real(0)));
 }
 
 }  // namespace detail
@@ -53,12 +53,13 @@ class FullProductTarget {
   // The value at every offset in `delta` (a fit's nodes): the phase product's branch-free
   // loop, then the transmittance in another, with cos(x/2) = cos(delta/2 - lower/2) by the
   // subtraction formula from one sincos of delta / 2 per node (whose sine the optical depth
-  // needs too). Both loops vectorise in float.
-  template <std::size_t N>
+  // needs too). Both loops vectorise in float. kAccuracy as PhaseProduct::evaluate's.
+  template <Accuracy kAccuracy = Accuracy::Full, std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
-    phase_.evaluate(delta, out);
+    phase_.template evaluate<kAccuracy>(delta, out);
     if (!(depth_scale_ > 0)) return;
-    for (std::size_t j = 0; j < N; ++j) out[j] *= detail::SegmentTransmittance(SinCosLanes(delta[j] / 2), pole_, depth_scale_);
+    for (std::size_t j = 0; j < N; ++j)
+      out[j] *= detail::SegmentTransmittance<kAccuracy>(SinCosLanes<kAccuracy>(delta[j] / 2), pole_, depth_scale_);
   }
 
   bool point_lobe_flat() const { return phase_.point_lobe_flat(); }

@@ -91,17 +91,18 @@ struct LobeShape {
     Real w = half.sin * from_sin + half.cos * from_cos;
     return base + slope * w * w;
   }
+  template <Accuracy kAccuracy = Accuracy::Full>
   [[gnu::always_inline]] Real operator()(SinCosPair<Real> half) const {
-    Real r = RsqrtLanes(d(half));
+    Real r = RsqrtLanes<kAccuracy>(d(half));
     return scale * (r * r * r);
   }
 };
 
 // Two lobes' product at the same half angle with one reciprocal square root, (d_a d_b)^(-3/2):
 // each d is at least (1 - |g|)^2, so the product stays far inside float's range.
-template <typename Real>
+template <Accuracy kAccuracy = Accuracy::Full, typename Real>
 [[gnu::always_inline]] inline Real LobeProduct(const LobeShape<Real>& a, const LobeShape<Real>& b, SinCosPair<Real> half) {
-  Real r = RsqrtLanes(a.d(half) * b.d(half));
+  Real r = RsqrtLanes<kAccuracy>(a.d(half) * b.d(half));
   return a.scale * b.scale * (r * r * r);
 }
 
@@ -132,29 +133,32 @@ class PhaseProduct {
   // The product at every offset in `delta` (a fit's nodes), in a branch-free loop that
   // compilers vectorise. Henyey-Greenstein lobes are detail::LobeShape's functions of sin and
   // cos of delta / 2; a clamped cosine is r cos(delta - theta_e) / pi, from the same pair by
-  // the double-angle formulas.
-  template <std::size_t N>
+  // the double-angle formulas. Accuracy::Fit for a fit's node values (core/lane_math.hpp);
+  // Full is operator() to rounding (tests/lib/phase_product.cpp).
+  template <Accuracy kAccuracy = Accuracy::Full, std::size_t N>
   void evaluate(const std::array<Real, N>& delta, std::array<Real, N>& out) const {
     // (Computed here, not in the constructor: the Cauchy fits never need them. Inline
     // sines: two independent libm calls cost more than the polynomial, which overlaps.)
     switch (kind_) {
       case LobeKind::HenyeyGreenstein: {
-        const auto b = detail::LobeShape<Real>::Of(g_point_, r_, one_minus_r_, SinCosLanes(theta_e_ / 2));
-        return EvaluateWith(delta, out, [&](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
-          return detail::LobeProduct(a, b, half);
+        const auto b = detail::LobeShape<Real>::Of(g_point_, r_, one_minus_r_, SinCosLanes<kAccuracy>(theta_e_ / 2));
+        return EvaluateWith<kAccuracy>(delta, out, [&](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
+          return detail::LobeProduct<kAccuracy>(a, b, half);
         });
       }
       case LobeKind::ClampedCosine: {
-        const SinCosPair<Real> peak = SinCosLanes(theta_e_);
+        const SinCosPair<Real> peak = SinCosLanes<kAccuracy>(theta_e_);
         const Real scale = r_ * kInvPi<Real>;
-        return EvaluateWith(delta, out, [&](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
+        return EvaluateWith<kAccuracy>(delta, out, [&](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
           Real cos = (half.cos - half.sin) * (half.cos + half.sin) * peak.cos + 2 * half.sin * half.cos * peak.sin;
-          return a(half) * scale * SelectLanes(cos > 0, cos, Real(0));
+          return a.template operator()<kAccuracy>(half) * scale * SelectLanes(cos > 0, cos, Real(0));
         });
       }
       case LobeKind::None: break;
     }
-    EvaluateWith(delta, out, [](const detail::LobeShape<Real>& a, SinCosPair<Real> half) { return a(half); });
+    EvaluateWith<kAccuracy>(delta, out, [](const detail::LobeShape<Real>& a, SinCosPair<Real> half) {
+      return a.template operator()<kAccuracy>(half);
+    });
   }
 
   Real operator()(Real delta) const { return segment_lobe(delta) * point_lobe(delta); }
@@ -220,10 +224,10 @@ class PhaseProduct {
 
  private:
   // evaluate()'s loop: product(segment lobe, sin and cos of delta / 2) at every offset.
-  template <std::size_t N, typename Product>
+  template <Accuracy kAccuracy, std::size_t N, typename Product>
   void EvaluateWith(const std::array<Real, N>& delta, std::array<Real, N>& out, Product product) const {
-    const auto a = detail::LobeShape<Real>::Of(g_, 1, 0, SinCosLanes(lower_ / 2));
-    for (std::size_t j = 0; j < N; ++j) out[j] = product(a, SinCosLanes(delta[j] / 2));
+    const auto a = detail::LobeShape<Real>::Of(g_, 1, 0, SinCosLanes<kAccuracy>(lower_ / 2));
+    for (std::size_t j = 0; j < N; ++j) out[j] = product(a, SinCosLanes<kAccuracy>(delta[j] / 2));
   }
 
   Real g_, g_point_;

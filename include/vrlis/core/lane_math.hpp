@@ -30,10 +30,18 @@ struct SinCosPair {
   Real sin, cos;
 };
 
+// How many digits SinCosLanes, RsqrtLanes and ExpLanes keep in float. Full: within a few ulp
+// (samples, densities, inverses). Fit: within 1e-4 relative (tests/lib/lane_math.cpp), for
+// the values a fit is built from (a piecewise-linear density's node values): the density is
+// exact whatever they are, since its pdf comes from the same stored values, and an error of
+// 1e-4 in them moves the variance far less than the fit's own approximation does. Fewer
+// terms: VrlMarginal's fit takes about a tenth less time (docs/bench.md).
+enum class Accuracy { Full, Fit };
+
 template <typename Real>
 SinCosPair<Real> SinCos(Real x) { return {std::sin(x), std::cos(x)}; }
 
-template <typename Real>
+template <Accuracy kAccuracy = Accuracy::Full, typename Real>
 [[gnu::always_inline]] inline SinCosPair<Real> SinCosLanes(Real x) {
   if constexpr (!std::is_same_v<Real, float>) {
     return {std::sin(x), std::cos(x)};
@@ -47,8 +55,16 @@ template <typename Real>
     std::memcpy(&bits, &shifted, sizeof bits);
     float r = ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188216e-8f;
     float z = r * r;
-    float s = r + r * z * (-1.6666667e-1f + z * (8.3333333e-3f + z * (-1.9841270e-4f + z * 2.7557319e-6f)));
-    float c = 1 - 0.5f * z + z * z * (4.1666667e-2f + z * (-1.3888889e-3f + z * (2.4801587e-5f + z * -2.7557319e-7f)));
+    // Fit: to r^5 and r^6, truncated below (pi/4)^7 / 7! = 3.7e-5 and (pi/4)^8 / 8! = 3.6e-6.
+    float s = r + r * z *
+                      (kAccuracy == Accuracy::Fit
+                           ? -1.6666667e-1f + z * 8.3333333e-3f
+                           : -1.6666667e-1f + z * (8.3333333e-3f + z * (-1.9841270e-4f + z * 2.7557319e-6f)));
+    float c = 1 - 0.5f * z +
+              z * z *
+                  (kAccuracy == Accuracy::Fit
+                       ? 4.1666667e-2f + z * -1.3888889e-3f
+                       : 4.1666667e-2f + z * (-1.3888889e-3f + z * (2.4801587e-5f + z * -2.7557319e-7f)));
     // Quadrant k mod 4: (s, c), (c, -s), (-s, -c), (-c, s), chosen with bit masks: the
     // quadrant is random across calls, and branches on it would be mispredicted.
     std::uint32_t sb, cb;
@@ -67,8 +83,8 @@ template <typename Real>
 // 1 / sqrt(x) for normal x > 0: the classic bit-level first guess (relative error below
 // 3.5e-2), then three Newton steps, each taking the error e to about 1.5 e^2 (measured
 // 1.8e-3, 4.7e-6, then rounding only): within 2 ulp (tests/lib/lane_math.cpp); two steps
-// would leave 40 ulp.
-template <typename Real>
+// (Accuracy::Fit) leave 40 ulp.
+template <Accuracy kAccuracy = Accuracy::Full, typename Real>
 [[gnu::always_inline]] inline Real RsqrtLanes(Real x) {
   if constexpr (!std::is_same_v<Real, float>) {
     return 1 / std::sqrt(x);
@@ -79,7 +95,7 @@ template <typename Real>
     float y;
     std::memcpy(&y, &bits, sizeof y);
     float half = 0.5f * x;
-    for (int i = 0; i < 3; ++i) y = y * (1.5f - half * y * y);
+    for (int i = 0; i < (kAccuracy == Accuracy::Fit ? 2 : 3); ++i) y = y * (1.5f - half * y * y);
     return y;
   }
 }
@@ -217,10 +233,10 @@ template <typename Real>
 
 // exp(x) for x <= 88, vectorisable in float: x = k ln 2 + r (detail::ReduceLn2), the Taylor
 // series of exp r to r^7 on |r| <= ln(2) / 2 (truncation below (ln(2)/2)^8 / 8! = 5e-9, under float's half
-// ulp), then 2^k put into the exponent bits. Within 2 ulp of exp (tests/lib/lane_math.cpp)
-// down to the smallest normal float; below it (x < -87.3, subnormal results) 0, and
-// exp(-inf) = 0. NaN propagates.
-template <typename Real>
+// ulp; Accuracy::Fit: to r^4, below (ln(2)/2)^5 / 5! = 4.2e-5), then 2^k put into the exponent
+// bits. Within 2 ulp of exp (tests/lib/lane_math.cpp) down to the smallest normal float;
+// below it (x < -87.3, subnormal results) 0, and exp(-inf) = 0. NaN propagates.
+template <Accuracy kAccuracy = Accuracy::Full, typename Real>
 [[gnu::always_inline]] inline Real ExpLanes(Real x) {
   if constexpr (!std::is_same_v<Real, float>) {
     return std::exp(x);
@@ -228,7 +244,9 @@ template <typename Real>
     constexpr float kSmallest = -87.33654f;  // ln of the smallest normal float
     detail::Ln2Reduction red = detail::ReduceLn2(x);
     float r = red.r;
-    float p = 1 + r * (1 + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f + r * (8.3333333e-3f + r * (1.3888889e-3f + r * 1.9841270e-4f))))));
+    float p = 1 + r * (1 + r * (0.5f + r * (kAccuracy == Accuracy::Fit
+                                                ? 1.6666667e-1f + r * 4.1666667e-2f
+                                                : 1.6666667e-1f + r * (4.1666667e-2f + r * (8.3333333e-3f + r * (1.3888889e-3f + r * 1.9841270e-4f))))));
     // Below kSmallest 2^k is no normal float: 0, by a select (SelectLanes, so that loops vectorise).
     return SelectLanes(x < kSmallest, 0.0f, p * detail::TwoToThe(red.k));
   }

@@ -68,7 +68,7 @@ class PiecewiseLinearAngle {
     }
     std::array<Real, kNodes> at;
     for (int j = 0; j < kNodes; ++j) at[j] = node[j] * width;
-    target.evaluate(at, value);
+    target.template evaluate<Accuracy::Fit>(at, value);  // node values: core/lane_math.hpp's Accuracy
     Real largest = *std::max_element(value.begin(), value.end());
     if (largest > 0 && std::isfinite(largest))
       for (Real& v : value) v = std::max(v / largest, Target::kRelativeFloor);

@@ -24,8 +24,9 @@
 // Node values are floored at kRelativeFloor x their largest, so the density is positive
 // wherever the integrand is and a poor estimate costs at most a bounded factor in variance.
 // The fit costs kNodes x (VrlPoint sample + angle domain + 1 to 5 pieces x kRule target
-// evaluations), run as two loops over the nodes that vectorise in float (FitNodes); its
-// time is vrlis_bench's VrlMarginal/step (docs/bench.md).
+// evaluations), run as two loops over the nodes that vectorise in float (FitNodes), with the
+// lanes' sines, cosines and exponentials to a fit's accuracy (core/lane_math.hpp's Accuracy);
+// its time is vrlis_bench's VrlMarginal/step (docs/bench.md).
 //
 // The camera segment is the gather's [tmin, tmax], transmittance measured from x(tmin);
 // tmax may be +infinity: the angle domain maps it to a bounded interval and transmittance
@@ -179,7 +180,7 @@ class VrlMarginal {
       const detail::AngleFrame<Real> frame =
           detail::ReduceToAngles<true>(y, camera.origin, camera.dir, camera.tmin, camera.tmax);
       const Real lower = detail::PolesOf<true>(frame.tan_a).lower;
-      const SinCosPair<Real> pole = SinCosLanes(lower / 2);
+      const SinCosPair<Real> pole = SinCosLanes<Accuracy::Fit>(lower / 2);
       pole_sin[j] = pole.sin;
       pole_cos[j] = pole.cos;
       depth_scale[j] = sigma_t * frame.h / pole.cos;
@@ -187,7 +188,7 @@ class VrlMarginal {
       if constexpr (!kIsotropic) {
         in_plane = detail::ProjectLobe<true>(q.vrl.dir, frame.n, camera.dir, frame.tan_a, frame.on_line);
         const auto point =
-            detail::LobeShape<Real>::Of(g, in_plane.r, in_plane.one_minus_r, SinCosLanes(in_plane.theta_e / 2));
+            detail::LobeShape<Real>::Of(g, in_plane.r, in_plane.one_minus_r, SinCosLanes<Accuracy::Fit>(in_plane.theta_e / 2));
         point_sin[j] = point.from_sin;
         point_cos[j] = point.from_cos;
         point_base[j] = point.base;
@@ -232,13 +233,14 @@ class VrlMarginal {
       for (int i = 0; i < kRule; ++i) {
         for (int j = 0; j < kMax; ++j) {
           Real a = from[j], b = to[j], delta = a + xs[i] * (b - a);
-          SinCosPair<Real> half = SinCosLanes(delta / 2), pole{pole_sin[j], pole_cos[j]};
-          Real transmittance = SelectLanes(depth_scale[j] > 0, detail::SegmentTransmittance(half, pole, depth_scale[j]), Real(1));
+          SinCosPair<Real> half = SinCosLanes<Accuracy::Fit>(delta / 2), pole{pole_sin[j], pole_cos[j]};
+          Real transmittance = SelectLanes(
+              depth_scale[j] > 0, detail::SegmentTransmittance<Accuracy::Fit>(half, pole, depth_scale[j]), Real(1));
           Real lobes = point_scale * point_scale;
           if constexpr (!kIsotropic) {
             const detail::LobeShape<Real> point{point_sin[j], point_cos[j], point_base[j], point_slope[j], point_scale},
                 segment = detail::LobeShape<Real>::Of(g, 1, 0, pole);
-            lobes = detail::LobeProduct(segment, point, half);
+            lobes = detail::LobeProduct<Accuracy::Fit>(segment, point, half);
           }
           sum[j] += ws[i] * (b - a) * lobes * transmittance;
         }
@@ -246,7 +248,7 @@ class VrlMarginal {
     }
     // Transmittance relative to the nearest node, so it underflows only where it is negligible.
     Real least = *std::min_element(depth.begin(), depth.begin() + count);
-    for (int j = 0; j < kMax; ++j) value[j] = sum[j] * ExpLanes(least - depth[j]);  // past count: unused
+    for (int j = 0; j < kMax; ++j) value[j] = sum[j] * ExpLanes<Accuracy::Fit>(least - depth[j]);  // past count: unused
     Real largest = *std::max_element(value.begin(), value.begin() + count);
     if (!(largest > 0) || !std::isfinite(largest)) {
       value.fill(1);
