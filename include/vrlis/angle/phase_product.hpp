@@ -215,11 +215,18 @@ class PhaseProduct {
   }
   Real lower_pole() const { return lower_; }  // the offset of theta = -pi/2
 
-  Real segment_peak_value() const { return HenyeyGreensteinPeak(g_); }
-  Real point_peak_value() const {
-    if (kind_ == LobeKind::ClampedCosine) return r_ * kInvPi<Real>;
-    if (kind_ == LobeKind::None) return 1;
-    return HenyeyGreenstein(std::abs(g_point_), one_minus_r_, 1 + r_);
+  // Each lobe's largest value, as a numerator over a denominator: a fit that needs both the
+  // value and its reciprocal then divides once for each, side by side.
+  struct PeakValue {
+    Real num, den;
+  };
+  PeakValue segment_peak_value() const { return {HenyeyGreensteinPeak(g_), 1}; }
+  PeakValue point_peak_value() const {
+    if (kind_ == LobeKind::ClampedCosine) return {r_ * kInvPi<Real>, 1};
+    if (kind_ == LobeKind::None) return {1, 1};
+    // HenyeyGreenstein(|g|, 1 - r, 1 + r), undivided.
+    Real ag = std::abs(g_point_), d = HenyeyGreensteinBase(ag, one_minus_r_, 1 + r_);
+    return {(1 - ag) * (1 + ag), 4 * kPi<Real> * d * std::sqrt(d)};
   }
 
  private:

@@ -275,10 +275,13 @@ template <typename Real>
     float t = lo / (hi < kTiny ? kTiny : hi), s = t * t, s2 = s * s, s4 = s2 * s2;
     float p = ((0.99999998f - 0.33333073f * s) + (0.19992619f - 0.14203643f * s) * s2) +
               s4 * (((0.10640930f - 0.075042865f * s) + (0.042691423f - 0.016068569f * s) * s2) + 0.0028498742f * s4);
-    float a = t * p;
-    // Steep: pi/2 - a; then x < 0: pi - a; then the sign of y. Masks, not branches.
-    a = SelectLanes(steep, 1.5707963f - a, a);
-    a = SelectLanes(x < 0, 3.1415927f - a, a);
+    // Steep: pi/2 - a; then x < 0: pi - a; then the sign of y. Masks, not branches, and on
+    // constants only: each reflection is o + s a with (o, s) = (pi/2 or pi, -1) or (0, 1),
+    // the same roundings as pi/2 - a and pi - a, while the masks are computed beside the
+    // polynomial (selecting on a itself put their transfers after it).
+    float steep_o = SelectLanes(steep, 1.5707963f, 0.0f), steep_s = SelectLanes(steep, -1.0f, 1.0f);
+    float back_o = SelectLanes(x < 0, 3.1415927f, 0.0f), back_s = SelectLanes(x < 0, -1.0f, 1.0f);
+    float a = back_o + back_s * (steep_o + steep_s * (t * p));
     return std::copysign(a, y);
   }
 }

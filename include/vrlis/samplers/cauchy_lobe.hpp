@@ -75,10 +75,11 @@ struct CauchyLobes {
   }
 
  private:
-  void Add(Real peak, Real peak_value, Real width, bool segment) {
+  void Add(Real peak, typename PhaseProduct<Real>::PeakValue peak_value, Real width, bool segment) {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
     // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
-    Real extent = width + std::abs(peak), scale = 1 / (kPi<Real> * peak_value), inv_scale = kPi<Real> * peak_value;
+    Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;
+    Real scale = peak_value.den / pi_num, inv_scale = pi_num / peak_value.den;
     // Constant over the interval to the last digit, a flat lobe: so wide that it is over the
     // whole extent, or so far from the interval that its relative change there (at most
     // 2 width / distance) is below epsilon. The latter is no mere shortcut: there the

@@ -31,23 +31,29 @@ class CauchyMixtureAngle {
     return k < fit_.count ? fit_.lobe[k].inverse_primitive(rest * fit_.lobe[k].mass()) : rest * width_;
   }
 
-  Real pdf(Real delta) const { return Mix(delta, &TruncatedCauchy<Real>::density, 1 / width_); }
+  Real pdf(Real delta) const {
+    return Mix([delta](const TruncatedCauchy<Real>& c) { return c.density(delta); }, 1 / width_);
+  }
   // Both components' densities are needed at the sample whichever one produced it.
   SegmentSample<Real> sample_pdf(Real u) const {
     Real delta = sample(u);
     return {delta, pdf(delta)};
   }
-  Real cdf(Real delta) const { return Mix(delta, &TruncatedCauchy<Real>::primitive, delta / width_); }
+  Real cdf(Real delta) const {
+    return Mix([delta](const TruncatedCauchy<Real>& c) { return c.primitive(delta); }, delta / width_);
+  }
 
  private:
   explicit CauchyMixtureAngle(const PhaseProduct<Real>& target)
       : fit_(target), width_(target.width()), components_(target.point_kind() == LobeKind::None ? 1 : 2) {}
 
-  // The mean over the components of f_k(delta) / mass_k, for f the density or the
-  // primitive; a lobe the fit left out (constant over the interval) is the uniform component.
-  Real Mix(Real delta, Real (TruncatedCauchy<Real>::*f)(Real) const, Real uniform) const {
+  // The mean over the components of f(lobe_k) / mass_k, for f a lobe's density or primitive
+  // at one offset; a lobe the fit left out (constant over the interval) is the uniform
+  // component. (f a lambda, not a member pointer: GCC inlines it.)
+  template <typename F>
+  Real Mix(F f, Real uniform) const {
     Real sum = Real(components_ - fit_.count) * uniform;
-    for (int k = 0; k < fit_.count; ++k) sum += (fit_.lobe[k].*f)(delta) / fit_.lobe[k].mass();
+    for (int k = 0; k < fit_.count; ++k) sum += f(fit_.lobe[k]) / fit_.lobe[k].mass();
     return sum / Real(components_);
   }
 
