@@ -217,16 +217,11 @@ class PhaseProduct {
 
   // Each lobe's largest value, as a numerator over a denominator: a fit that needs both the
   // value and its reciprocal then divides once for each, side by side.
-  struct PeakValue {
-    Real num, den;
-  };
-  PeakValue segment_peak_value() const { return {HenyeyGreensteinPeak(g_), 1}; }
-  PeakValue point_peak_value() const {
+  PhaseFraction<Real> segment_peak_value() const { return {HenyeyGreensteinPeak(g_), 1}; }
+  PhaseFraction<Real> point_peak_value() const {
     if (kind_ == LobeKind::ClampedCosine) return {r_ * kInvPi<Real>, 1};
     if (kind_ == LobeKind::None) return {1, 1};
-    // HenyeyGreenstein(|g|, 1 - r, 1 + r), undivided.
-    Real ag = std::abs(g_point_), d = HenyeyGreensteinBase(ag, one_minus_r_, 1 + r_);
-    return {(1 - ag) * (1 + ag), 4 * kPi<Real> * d * std::sqrt(d)};
+    return HenyeyGreensteinFraction(std::abs(g_point_), one_minus_r_, 1 + r_);
   }
 
  private:

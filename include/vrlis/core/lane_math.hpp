@@ -35,7 +35,7 @@ struct SinCosPair {
 // the values a fit is built from (a piecewise-linear density's node values): the density is
 // exact whatever they are, since its pdf comes from the same stored values, and an error of
 // 1e-4 in them moves the variance far less than the fit's own approximation does. Fewer
-// terms: VrlMarginal's fit takes about a tenth less time (docs/bench.md).
+// terms, fewer cycles (what the fits gain: docs/maths.md#vrl-marginal).
 enum class Accuracy { Full, Fit };
 
 template <typename Real>

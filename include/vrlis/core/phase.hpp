@@ -21,14 +21,26 @@ Real HenyeyGreensteinBase(Real g, Real one_minus_cos, Real one_plus_cos) {
   }
 }
 
+// Henyey-Greenstein's value as numerator over denominator, for a caller that needs both it and
+// its reciprocal (one division each, side by side).
+template <typename Real>
+struct PhaseFraction {
+  Real num, den;
+};
+template <typename Real>
+PhaseFraction<Real> HenyeyGreensteinFraction(Real g, Real one_minus_cos, Real one_plus_cos) {
+  Real denom = HenyeyGreensteinBase(g, one_minus_cos, one_plus_cos);
+  return {(1 - g) * (1 + g), 4 * kPi<Real> * denom * std::sqrt(denom)};
+}
+
 template <bool kLanes = false, typename Real>
 Real HenyeyGreenstein(Real g, Real one_minus_cos, Real one_plus_cos) {
-  Real denom = HenyeyGreensteinBase<kLanes>(g, one_minus_cos, one_plus_cos);
   if constexpr (kLanes) {
-    Real r = RsqrtLanes(denom);
+    Real r = RsqrtLanes(HenyeyGreensteinBase<kLanes>(g, one_minus_cos, one_plus_cos));
     return (1 - g) * (1 + g) * (kInvPi<Real> / 4) * r * r * r;
   } else {
-    return (1 - g) * (1 + g) / (4 * kPi<Real> * denom * std::sqrt(denom));
+    PhaseFraction<Real> f = HenyeyGreensteinFraction(g, one_minus_cos, one_plus_cos);
+    return f.num / f.den;
   }
 }
 

@@ -75,7 +75,7 @@ struct CauchyLobes {
   }
 
  private:
-  void Add(Real peak, typename PhaseProduct<Real>::PeakValue peak_value, Real width, bool segment) {
+  void Add(Real peak, PhaseFraction<Real> peak_value, Real width, bool segment) {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
     // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
     Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;

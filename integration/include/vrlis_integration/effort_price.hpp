@@ -168,8 +168,8 @@ class EffortPrice {
   // by the same estimator (docs/maths.md#effort-accurate). A share: in a pass of nothing but
   // gathers a pair costs several times the pixel, and a short render (8 passes of room in the
   // study) pays for the first pass's.
-  bool pair(double u) const { return pairs() && u < kPairShare; }
   bool pairs() const { return passes_ < kMinPasses; }  // whether this pass pairs any pixel
+  bool pair(double u) const { return u < kPairShare; }   // whether a pixel of such a pass pairs
   static constexpr double kPairShare = 1.0 / 4;
   // A change of the image's model to or from the accurate one is made where its predicted
   // V x T is below kAccurateMargin of the other's: the rule's and the accurate model's
