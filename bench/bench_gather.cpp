@@ -3,9 +3,10 @@
 //   Gather/<method>/g:<g>   SampleMediumGather: validation, step one (VrlPoint: fit, sample,
 //                           pdf), the camera sampler chosen at run time (fit, sample, pdf),
 //                           the integrand and the weight; everything but the occlusion ray
-//   GatherBatch/<method>/g:<g>  SampleMediumGathers: one camera segment against kVrlPointBatch
-//                           VRLs (the camera of configuration 8k, the VRLs of 8k .. 8k + 7),
-//                           time per iteration, that is per batch (divide by 8 for one gather)
+//   GatherBatch/<method>/g:<g>  SampleMediumGathers: one camera segment against kGatherChunk
+//                           VRLs (the camera of configuration 32k, the VRLs of 32k .. 32k + 31,
+//                           the renderer's batches), time per iteration, that is per batch
+//                           (divide by 32 for one gather)
 //   GatherBatchDouble/<method>/g:<g>  the same in double (the same configurations, converted):
 //                           the price of double precision (docs/porting.md#precision)
 //   SurfaceGatherBatch/<method>/g:<g>  SampleSurfaceGathers: the VRLs of 8k .. 8k + 7 seen from
@@ -64,20 +65,20 @@ BatchInputs<Real> BatchInputsOf(const Pools& pools) {
 template <typename Real>
 void GatherBatch(benchmark::State& state, SegmentChoice method, double g) {
   const BatchInputs<Real> in = BatchInputsOf<Real>(PoolsFor(g));
-  const size_t batches = in.vrls.size() / kVrlPointBatch;
+  const size_t batches = in.vrls.size() / kGatherChunk;
   WithGatherSamplers<Real>(GatherSamplers{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
-    GatherSample<Real> out[kVrlPointBatch];
+    GatherSample<Real> out[kGatherChunk];
     size_t b = 0;
     for (auto _ : state) {
-      const size_t first = b * kVrlPointBatch;
+      const size_t first = b * kGatherChunk;
       const MediumGatherQuery<Real>& q = in.queries[first];
       SampleMediumGathers<typename decltype(step_one)::type, typename decltype(step_two)::type>(
-          ValidQuery{}, q.camera, q.medium, &in.vrls[first], kVrlPointBatch, &in.u_vrl[first], &in.u_camera[first], out);
+          ValidQuery{}, q.camera, q.medium, &in.vrls[first], kGatherChunk, &in.u_vrl[first], &in.u_camera[first], out);
       benchmark::DoNotOptimize(out);
       b = b + 1 == batches ? 0 : b + 1;
     }
   });
-  state.SetItemsProcessed(state.iterations() * kVrlPointBatch);
+  state.SetItemsProcessed(state.iterations() * kGatherChunk);
 }
 
 void SurfaceGatherBatch(benchmark::State& state, SegmentChoice method, double g) {

@@ -29,6 +29,22 @@ struct AngleFrame {
   bool on_line;
 };
 
+// The frames of a batch's queries, one array per number: the layout vector loads and stores
+// want, so that loops over the batch (ReduceToAngles<true>, PointAtOffset<true>) vectorise.
+template <typename Real, int kSize>
+struct AngleFrameLanes {
+  Real u0[kSize], h[kSize], tan_a[kSize], stretch[kSize], width[kSize], nx[kSize], ny[kSize], nz[kSize];
+  bool on_line[kSize];
+
+  void set(int i, const AngleFrame<Real>& f) {
+    u0[i] = f.u0, h[i] = f.h, tan_a[i] = f.tan_a, stretch[i] = f.stretch, width[i] = f.width;
+    nx[i] = f.n.x, ny[i] = f.n.y, nz[i] = f.n.z, on_line[i] = f.on_line;
+  }
+  AngleFrame<Real> operator[](int i) const {
+    return {u0[i], h[i], tan_a[i], stretch[i], width[i], {nx[i], ny[i], nz[i]}, on_line[i]};
+  }
+};
+
 // atan(b) - atan(a) with b - a = db >= 0 and tan_a = a, from the argument of (1 + i b)(1 - i a).
 template <typename Real>
 [[gnu::always_inline]] inline Real OffsetOfSlope(Real tan_a, Real db, Real b) {
@@ -69,6 +85,46 @@ template <bool kLanes, typename Real>
   return f;
 }
 
+// dtheta / dt = h / (h^2 + (t - u0)^2).
+template <typename Real>
+[[gnu::always_inline]] inline Real DthetaDt(Real t, Real u0, Real h) {
+  Real x = (t - u0) / h;
+  return Real(1) / (h * (1 + x * x));
+}
+
+// The point at the angle offset delta of the frame f over [tmin, tmax], and dtheta/dt there,
+// from the sine and cosine that carry delta to t: with
+// denom = cos(delta) - tan(theta_a) sin(delta) = cos(theta) / cos(theta_a),
+// t = tmin + h (1 + A^2) sin(delta) / denom and dtheta/dt = cos^2(theta) / h = denom^2 / (h (1 + A^2)).
+// This equals DthetaDt of the rounded t to a few ulps (tan of the computed t's angle is
+// (A c + s) / denom). A t past the largest finite sample (tmax, or the largest Real on an
+// unbounded segment) is clamped to it and takes its density there; so does a step that
+// rounds to nothing, at tmin (h (1 + A^2) may overflow; never multiply it by 0). kLanes:
+// branch-free, with SinCosLanes, for a loop over a batch's domains.
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline AnglePoint<Real> PointAtOffset(const AngleFrame<Real>& f, Real tmin, Real tmax,
+                                                             Real delta) {
+  constexpr Real kInf = std::numeric_limits<Real>::infinity();
+  SinCosPair<Real> sc = kLanes ? SinCosLanes(delta) : SinCos(delta);
+  Real s = sc.sin, c = sc.cos;
+  Real denom = c - f.tan_a * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
+  const Real largest = std::abs(tmax) < kInf ? tmax : std::numeric_limits<Real>::max();
+  if constexpr (kLanes) {
+    Real step = SelectLanes(denom > 0, s / denom, kInf);
+    Real t = tmin + f.stretch * step;
+    bool at_tmin = !(step > 0), clamped = at_tmin | !(t < largest);
+    Real end = SelectLanes(at_tmin, tmin, largest);
+    return {SelectLanes(clamped, end, SelectLanes(t > tmin, t, tmin)),
+            SelectLanes(clamped, DthetaDt(end, f.u0, f.h), denom * denom / f.stretch)};
+  } else {
+    Real step = denom > 0 ? s / denom : kInf;
+    if (!(step > 0)) return {tmin, DthetaDt(tmin, f.u0, f.h)};
+    Real t = tmin + f.stretch * step;
+    if (!(t < largest)) return {largest, DthetaDt(largest, f.u0, f.h)};
+    return {std::max(t, tmin), denom * denom / f.stretch};
+  }
+}
+
 }  // namespace detail
 
 template <typename Real>
@@ -76,6 +132,11 @@ class AngleDomain {
  public:
   explicit AngleDomain(const SegmentQuery<Real>& q)
       : AngleDomain(q, detail::ReduceToAngles<false>(q.point, q.origin, q.dir, q.tmin, q.tmax)) {}
+  // From q's reduction computed elsewhere: detail::ReduceToAngles<true> of its point, which a
+  // batch runs in lanes over many points against one segment.
+  AngleDomain(const SegmentQuery<Real>& q, const detail::AngleFrame<Real>& f)
+      : tmin_(q.tmin), tmax_(q.tmax), u0_(f.u0), h_(f.h), tan_a_(f.tan_a), stretch_(f.stretch), width_(f.width),
+        n_(f.n), on_line_(f.on_line) {}
 
   Real tmin() const { return tmin_; }
   Real tmax() const { return tmax_; }
@@ -102,35 +163,16 @@ class AngleDomain {
   // The inverse of offset_at: tan(theta_a + delta) written with the addition formula.
   Real t_at(Real delta) const { return point_at(delta).t; }
 
-  // t_at(delta) and dtheta/dt there, from the sine and cosine t_at needs anyway: with
-  // denom = cos(delta) - tan(theta_a) sin(delta) = cos(theta) / cos(theta_a),
-  // t = tmin + h (1 + A^2) sin(delta) / denom and
-  // dtheta/dt = cos^2(theta) / h = denom^2 / (h (1 + A^2)). This equals dtheta_dt(t) of
-  // the rounded t to a few ulps (tan of the computed t's angle is (A c + s) / denom).
+  // t_at(delta) and dtheta/dt there (detail::PointAtOffset).
   AnglePoint<Real> point_at(Real delta) const {
-    SinCosPair<Real> sc = SinCos(delta);
-    Real s = sc.sin, c = sc.cos;
-    Real denom = c - tan_a_ * s;  // cos(theta) / cos(theta_a) > 0 inside the domain
-    Real step = denom > 0 ? s / denom : std::numeric_limits<Real>::infinity();
-    if (!(step > 0)) return {tmin_, dtheta_dt(tmin_)};  // h (1 + A^2) may overflow; never multiply it by 0
-    Real t = tmin_ + stretch_ * step;
-    if (!(t < LargestSample())) return {LargestSample(), dtheta_dt(LargestSample())};  // clamped: of the clamped t
-    return {std::max(t, tmin_), denom * denom / stretch_};
+    return detail::PointAtOffset<false>(frame(), tmin_, tmax_, delta);
   }
 
   // dtheta / dt = h / (h^2 + (t - u0)^2).
-  Real dtheta_dt(Real t) const {
-    Real x = (t - u0_) / h_;
-    return Real(1) / (h_ * (1 + x * x));
-  }
+  Real dtheta_dt(Real t) const { return detail::DthetaDt(t, u0_, h_); }
 
  private:
-  // Samples must be finite even on an unbounded segment.
-  Real LargestSample() const { return std::isfinite(tmax_) ? tmax_ : std::numeric_limits<Real>::max(); }
-
-  AngleDomain(const SegmentQuery<Real>& q, const detail::AngleFrame<Real>& f)
-      : tmin_(q.tmin), tmax_(q.tmax), u0_(f.u0), h_(f.h), tan_a_(f.tan_a), stretch_(f.stretch), width_(f.width),
-        n_(f.n), on_line_(f.on_line) {}
+  detail::AngleFrame<Real> frame() const { return {u0_, h_, tan_a_, stretch_, width_, n_, on_line_}; }
 
   Real tmin_, tmax_, u0_, h_, tan_a_, stretch_, width_;
   Vec3<Real> n_;

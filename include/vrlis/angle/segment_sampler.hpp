@@ -40,6 +40,9 @@ class SegmentSampler {
   explicit SegmentSampler(const SegmentQuery<Real>& q, FitArgs&&... fit_args)
       : SegmentSampler(Checked{Validate(q)}, q, std::forward<FitArgs>(fit_args)...) {}
   SegmentSampler(ValidQuery, const SegmentQuery<Real>& q) : SegmentSampler(Checked{QueryError::None}, q) {}
+  // With q's angle domain reduced elsewhere (a batch reduces many in lanes: gather/*_gather.hpp).
+  SegmentSampler(ValidQuery, const SegmentQuery<Real>& q, const AngleDomain<Real>& domain)
+      : SegmentSampler(QueryError::None, q, domain) {}
 
   bool valid() const { return error_ == QueryError::None; }
   QueryError error() const { return error_; }
@@ -66,6 +69,11 @@ class SegmentSampler {
     return {p.t, d.pdf * p.dtheta_dt};
   }
 
+  // sample_pdf's first half: the distribution's angle offset and its density over the offset
+  // (pdf 0 where nothing is sampled), which domain().point_at carries to t; a batch carries
+  // many at once in lanes (detail::PointAtOffset).
+  SegmentSample<Real> sample_offset(Real u) const { return usable_ ? dist_.sample_pdf(u) : SegmentSample<Real>{}; }
+
   Real invert(Real t) const {
     if (!usable_) return valid() ? Real(0) : kNaN;
     return Clamp(dist_.cdf(domain_.offset_at(t)), Real(0), Real(1));
@@ -77,8 +85,12 @@ class SegmentSampler {
   };
   template <typename... FitArgs>
   SegmentSampler(Checked checked, const SegmentQuery<Real>& q, FitArgs&&... fit_args)
-      : error_(checked.error),
-        domain_(error_ == QueryError::None ? q : Fallback()),
+      : SegmentSampler(checked.error, q, AngleDomain<Real>(checked.error == QueryError::None ? q : Fallback()),
+                       std::forward<FitArgs>(fit_args)...) {}
+  template <typename... FitArgs>
+  SegmentSampler(QueryError error, const SegmentQuery<Real>& q, const AngleDomain<Real>& domain, FitArgs&&... fit_args)
+      : error_(error),
+        domain_(domain),
         usable_(valid() && domain_.width() >= std::numeric_limits<Real>::min() &&
                 RepresentableLength(domain_.tmax() - domain_.tmin())),
         dist_(usable_ ? q : Fallback(), usable_ ? domain_ : AngleDomain<Real>(Fallback()),

@@ -17,6 +17,7 @@
 //
 // Log1pLanes and Expm1Lanes serve the hot path's hyperbolic functions (the VRL point of
 // step one), where glibc's log1pf and expm1f took a quarter of a gather; see each below.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -307,6 +308,28 @@ template <bool kLanes, typename Real>
     return SqrtLanes(x);
   } else {
     return std::sqrt(x);
+  }
+}
+
+// x clamped to [lo, hi], NaN kept: in lanes by selects (std::min and std::max pass
+// references, and arithmetic on their result kept GCC from vectorising the loop).
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline Real PickClamp(Real x, Real lo, Real hi) {
+  if constexpr (kLanes) {
+    return SelectLanes(x < lo, lo, SelectLanes(hi < x, hi, x));
+  } else {
+    return std::min(std::max(x, lo), hi);
+  }
+}
+
+// exp(x): by ExpLanes in the lanes' arithmetic, else by libm (glibc picks an FMA build of
+// expf at run time, faster for one value than ExpLanes compiled for the baseline instruction set).
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline Real PickExp(Real x) {
+  if constexpr (kLanes) {
+    return ExpLanes(x);
+  } else {
+    return std::exp(x);
   }
 }
 

@@ -2,16 +2,20 @@
 // The outcome of one gather estimate: the sampled points, their densities and the weight
 // f / pdf of everything except visibility and the light's power. A renderer traces one
 // occlusion ray between camera_point and light_point and multiplies.
+#include <limits>
+
 #include "../core/gather_query.hpp"
+#include "../core/lane_math.hpp"
 
 namespace vrlis {
 
 namespace detail {
 // The medium's share of a gather's integrand: sigma_s once per scattering event (1 or 2),
-// and the transmittance of the light's whole way through the medium.
-template <typename Real>
+// and the transmittance of the light's whole way through the medium. kLanes: for a loop
+// over a batch's gathers (lane_math.hpp).
+template <bool kLanes = false, typename Real>
 Real MediumFactor(Real sigma_s, Real sigma_t, int scatterings, Real path_length) {
-  return (scatterings == 2 ? sigma_s * sigma_s : sigma_s) * std::exp(-sigma_t * path_length);
+  return Pick<kLanes>(scatterings == 2, sigma_s * sigma_s, sigma_s) * PickExp<kLanes>(-sigma_t * path_length);
 }
 }  // namespace detail
 
@@ -43,8 +47,9 @@ struct GatherSample {
   // The weight in one channel of the medium, its coefficients built as the query's were (its
   // g must be the query's). The points and pdfs stay those sampled for the query's medium, so
   // the weight is unbiased in every channel.
+  template <bool kLanes = false>
   Real weight_for(const Medium<Real>& channel) const {
-    return bare_weight * detail::MediumFactor(channel.sigma_s, channel.sigma_t, scatterings, path_length);
+    return bare_weight * detail::MediumFactor<kLanes>(channel.sigma_s, channel.sigma_t, scatterings, path_length);
   }
 };
 
@@ -64,8 +69,8 @@ struct IntegrandFactors {
 };
 
 namespace detail {
-template <typename Real>
-Real FiniteOrZero(Real x) { return x > 0 && std::isfinite(x) ? x : Real(0); }
+template <bool kLanes = false, typename Real>
+Real FiniteOrZero(Real x) { return Pick<kLanes>((x > 0) & (x < std::numeric_limits<Real>::infinity()), x, Real(0)); }
 
 // GatherSample::over_equiangular of the sample s drawn by `sampler` (a SegmentSampler):
 // equiangular sampling's density is uniform in the angle, 1 / width.
@@ -85,18 +90,20 @@ Real OverDensity(const Sampler& sampler, const SegmentQuery<Real>& q, SegmentSam
 
 template <typename Real>
 bool Usable(SegmentSample<Real> s) {
-  return s.pdf > 0 && std::isfinite(s.pdf) && std::isfinite(s.t);
+  constexpr Real kInf = std::numeric_limits<Real>::infinity();
+  return (s.pdf > 0) & (s.pdf < kInf) & (std::abs(s.t) < kInf);  // no branches: it runs in lanes too
 }
 
 // Fills the connection and the weights from the integrand's factors and the pdf; any
 // non-finite or non-positive outcome becomes "nothing to trace" (never a NaN in an image).
-template <typename Real>
+// kLanes: for a loop over a batch's gathers.
+template <bool kLanes = false, typename Real>
 GatherSample<Real> Finish(GatherSample<Real> s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
-  s.bare_weight = FiniteOrZero(f.bare / pdf);
+  s.bare_weight = FiniteOrZero<kLanes>(f.bare / pdf);
   s.path_length = f.path_length;
   s.scatterings = f.scatterings;
-  s.transmittance = std::exp(-m.sigma_t * f.connection);
-  s.weight = FiniteOrZero(s.weight_for(m));
+  s.transmittance = PickExp<kLanes>(-m.sigma_t * f.connection);
+  s.weight = FiniteOrZero<kLanes>(s.template weight_for<kLanes>(m));
   return s;
 }
 }  // namespace detail

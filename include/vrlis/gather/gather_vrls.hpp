@@ -33,7 +33,7 @@ namespace detail {
 template <typename Real, int kUniforms>
 struct GatherBatch {
   // Several lanes' worth, so that a split gather's samples mostly share one fit.
-  static constexpr int kSize = 4 * kVrlPointBatch;
+  static constexpr int kSize = kGatherChunk;
   VrlSegment<Real> segments[kSize];
   Real u[kUniforms][kSize];
   int source[kSize];

@@ -23,20 +23,24 @@ SegmentQuery<Real> CameraStepQuery(const MediumGatherQuery<Real>& q, Vec3<Real> 
 
 // The integrand at (t, v) without visibility, factored by the medium's coefficients. Both
 // phase lobes share one square root and one division (their numerators are the medium's).
-// (The exponentials stay libm's: glibc picks an FMA build of expf at run time, faster than
-// ExpLanes compiled for the baseline instruction set: measured -8% gathers/s with it.)
-template <typename Real>
+// kLanes: branch-free, for a loop over a batch's gathers (lane_math.hpp).
+template <bool kLanes = false, typename Real>
 IntegrandFactors<Real> MediumGatherFactors(const MediumGatherQuery<Real>& q, Real t, Real v) {
   Vec3<Real> x = q.camera.at(t), y = q.vrl.at(v), w = y - x;
   Real r2 = Dot(w, w);
-  if (!(r2 > 0)) return {};
+  const bool apart = r2 > 0;
+  if (!kLanes && !apart) return {};
   const Real g = q.medium.g;
-  Real r = std::sqrt(r2), inv_r = 1 / r;
-  Real cos_camera = Clamp(Dot(q.camera.dir, w) * inv_r, Real(-1), Real(1));
-  Real cos_vrl = Clamp(-Dot(q.vrl.dir, w) * inv_r, Real(-1), Real(1));
-  Real d = HenyeyGreensteinBase(g, 1 - cos_camera, 1 + cos_camera) * HenyeyGreensteinBase(g, 1 - cos_vrl, 1 + cos_vrl);
+  Real r = PickSqrt<kLanes>(r2), inv_r = 1 / r;
+  Real cos_camera = PickClamp<kLanes>(Dot(q.camera.dir, w) * inv_r, Real(-1), Real(1));
+  Real cos_vrl = PickClamp<kLanes>(-Dot(q.vrl.dir, w) * inv_r, Real(-1), Real(1));
+  Real d = HenyeyGreensteinBase<kLanes>(g, 1 - cos_camera, 1 + cos_camera) *
+           HenyeyGreensteinBase<kLanes>(g, 1 - cos_vrl, 1 + cos_vrl);
   Real lobe_numerator = (1 - g) * (1 + g) * (kInvPi<Real> / 4);
-  return {Sqr(lobe_numerator) / (d * std::sqrt(d)) * inv_r * inv_r, (t - q.camera.tmin) + v + r, r, 2};
+  Real bare = Sqr(lobe_numerator) / (d * PickSqrt<kLanes>(d)) * inv_r * inv_r;
+  // (In lanes the coincident points' NaNs are computed, then replaced.)
+  return {Pick<kLanes>(apart, bare, Real(0)), Pick<kLanes>(apart, (t - q.camera.tmin) + v + r, Real(0)),
+          Pick<kLanes>(apart, r, Real(0)), apart ? 2 : 0};
 }
 
 // The integrand's value, and its connection transmittance if asked.
@@ -57,20 +61,22 @@ decltype(auto) WithGatherSamplers(GatherSamplers method, F&& f) {
   });
 }
 
-// The gather's outcome for step one's sample v and step two's sample t (either may be unusable).
-template <typename Real>
+// The gather's outcome for step one's sample v and step two's sample t (either may be
+// unusable). kLanes: branch-free for a loop over a batch's gathers, and the caller empties
+// the sample where either is unusable.
+template <bool kLanes = false, typename Real>
 [[gnu::always_inline]] inline GatherSample<Real> FinishWithCamera(const MediumGatherQuery<Real>& q, SegmentSample<Real> v,
                                                                   SegmentSample<Real> t) {
-  if (!detail::Usable(v) || !detail::Usable(t)) return {};
-  Vec3<Real> y = q.vrl.at(v.t);
+  if constexpr (!kLanes)
+    if (!detail::Usable(v) || !detail::Usable(t)) return {};
   GatherSample<Real> s;
   s.camera_point = q.camera.at(t.t);
-  s.light_point = y;
+  s.light_point = q.vrl.at(v.t);
   s.t = t.t;
   s.pdf_t = t.pdf;
   s.v = v.t;
   s.pdf_v = v.pdf;
-  return detail::Finish(s, MediumGatherFactors(q, t.t, v.t), q.medium, t.pdf * v.pdf);
+  return detail::Finish<kLanes>(s, MediumGatherFactors<kLanes>(q, t.t, v.t), q.medium, t.pdf * v.pdf);
 }
 
 // Step two and the weight for step one's sample v (usable or not) and u_camera.
@@ -97,55 +103,88 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // (each query valid). Step one with VrlPoint runs kVrlPointBatch VRLs at once as vector
 // lanes (SampleVrlPoints: the same numbers as one at a time, to rounding); any other step one
 // is fitted once for a run of equal VRLs (a split gather's samples), which is the same density
-// and the same numbers. The rest runs in
-// phases, each a loop over the batch (camera fits, their samples, the integrands): one
-// gather is a long chain of dependent operations, the gathers of a phase are independent,
-// and a loop over them lets the processor overlap their chains, which one whole gather after
-// another (too many instructions for its reordering window) did not. Same numbers, fewer cycles.
-// With `auto` as the camera sampler and measure_mixture, each sample also carries
-// GatherSample::over_mixture (a CauchyMixture fit per sample).
+// and the same numbers. The rest runs in phases over up to kGatherChunk gathers, each a loop:
+// the camera steps' angle domains (all against the one camera segment), their fits and
+// offsets (each sampler's own code), then their points and the integrands. The first and
+// the last run in vector lanes, to rounding the one-at-a-time numbers (lane_math.hpp). One
+// gather is a long chain of dependent operations and one vector of lanes is still one
+// chain; the gathers of a phase are independent, and several vectors of them let the
+// processor overlap their chains (lanes over 8 gathers at a time gained 10%, over 32 a
+// factor 2 for equiangular sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera sampler and measure_mixture,
+// each sample also carries GatherSample::over_mixture (a CauchyMixture fit per sample).
+inline constexpr int kGatherChunk = 4 * kVrlPointBatch;
+
 namespace detail {
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathersAsBuilt(const RaySegment<Real>& camera, const Medium<Real>& medium,
                                                  const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
                                                  const Real* u_camera, GatherSample<Real>* out,
                                                  bool measure_mixture) {
+  constexpr int kSize = kGatherChunk;
   std::optional<StepOneSampler> step_one;  // fitted for vrls[fitted]
   int fitted = -1;
-  for (int first = 0; first < count; first += kVrlPointBatch) {
-    int n = std::min(kVrlPointBatch, count - first);
-    SegmentSample<Real> v[kVrlPointBatch];
-    if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
-      SampleVrlPoints(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
-    } else {
-      for (int i = first; i < first + n; ++i) {
-        if (fitted < 0 || !SameVrl(vrls[fitted], vrls[i]))
-          step_one.emplace(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[i], medium}), fitted = i;
-        v[i - first] = step_one->sample_pdf(u_vrl[i]);
+  for (int first = 0; first < count; first += kSize) {
+    const int n = std::min(kSize, count - first);
+    const int lanes = (n + kVrlPointBatch - 1) / kVrlPointBatch * kVrlPointBatch;  // whole vectors
+    SegmentSample<Real> v[kSize];
+    for (int i = 0; i < n; i += kVrlPointBatch) {
+      const int m = std::min(kVrlPointBatch, n - i);
+      if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
+        SampleVrlPoints(ValidQuery{}, camera, vrls + first + i, m, u_vrl + first + i, v + i);
+      } else {
+        for (int k = first + i; k < first + i + m; ++k) {
+          if (fitted < 0 || !SameVrl(vrls[fitted], vrls[k]))
+            step_one.emplace(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[k], medium}), fitted = k;
+          v[k - first] = step_one->sample_pdf(u_vrl[k]);
+        }
       }
     }
-    std::optional<CameraSampler> fit[kVrlPointBatch];  // none where step one sampled nothing
+    // The lanes' inputs, one array per number (the unused lanes repeat the first gather).
+    Real ox[kSize], oy[kSize], oz[kSize], dx[kSize], dy[kSize], dz[kSize], length[kSize], vt[kSize], vpdf[kSize];
+    for (int i = 0; i < lanes; ++i) {
+      const int j = i < n ? i : 0;
+      const VrlSegment<Real>& vrl = vrls[first + j];
+      ox[i] = vrl.origin.x, oy[i] = vrl.origin.y, oz[i] = vrl.origin.z;
+      dx[i] = vrl.dir.x, dy[i] = vrl.dir.y, dz[i] = vrl.dir.z;
+      length[i] = vrl.length, vt[i] = v[j].t, vpdf[i] = v[j].pdf;
+    }
+    auto vrl_of = [&](int i) { return VrlSegment<Real>{{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, length[i]}; };
+    AngleFrameLanes<Real, kSize> frames;
+    for (int i = 0; i < lanes; ++i)
+      frames.set(i, ReduceToAngles<true>(vrl_of(i).at(vt[i]), camera.origin, camera.dir, camera.tmin, camera.tmax));
+    std::optional<CameraSampler> fit[kSize];  // none where step one sampled nothing
     auto step_query = [&](int i) {
       MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
       return CameraStepQuery(q, q.vrl.at(v[i].t));
     };
     for (int i = 0; i < n; ++i)
-      if (detail::Usable(v[i])) fit[i].emplace(ValidQuery{}, step_query(i));
-    SegmentSample<Real> t[kVrlPointBatch];
-    Real over[kVrlPointBatch] = {}, over_mixture[kVrlPointBatch] = {};  // of auto's samples
-    for (int i = 0; i < n; ++i) {
-      t[i] = fit[i] ? fit[i]->sample_pdf(u_camera[first + i]) : SegmentSample<Real>{};
-      if constexpr (std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>) {
-        if (fit[i]) over[i] = detail::OverEquiangular(*fit[i], t[i]);
-        if (fit[i] && measure_mixture)
-          over_mixture[i] = detail::OverDensity<CauchyMixtureAngle<Real>>(*fit[i], step_query(i), t[i]);
+      if (detail::Usable(v[i])) {
+        const SegmentQuery<Real> q = step_query(i);
+        fit[i].emplace(ValidQuery{}, q, AngleDomain<Real>(q, frames[i]));
       }
+    Real delta[kSize] = {}, pdf_delta[kSize] = {};  // pdf 0: nothing sampled
+    for (int i = 0; i < n; ++i)
+      if (fit[i]) {
+        SegmentSample<Real> d = fit[i]->sample_offset(u_camera[first + i]);
+        delta[i] = d.t, pdf_delta[i] = d.pdf;
+      }
+    GatherSample<Real> samples[kSize];
+    bool usable[kSize];
+    for (int i = 0; i < lanes; ++i) {
+      AnglePoint<Real> p = PointAtOffset<true>(frames[i], camera.tmin, camera.tmax, delta[i]);
+      SegmentSample<Real> t{p.t, pdf_delta[i] * p.dtheta_dt}, vs{vt[i], vpdf[i]};
+      usable[i] = Usable(vs) & Usable(t);
+      samples[i] = FinishWithCamera<true>(MediumGatherQuery<Real>{camera, vrl_of(i), medium}, vs, t);
     }
     for (int i = 0; i < n; ++i) {
       GatherSample<Real>& g = out[first + i];
-      g = FinishWithCamera(MediumGatherQuery<Real>{camera, vrls[first + i], medium}, v[i], t[i]);
-      g.over_equiangular = g.contributes() ? over[i] : Real(0);
-      g.over_mixture = g.contributes() ? over_mixture[i] : Real(0);
+      g = usable[i] ? samples[i] : GatherSample<Real>{};
+      if constexpr (std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>) {  // over the drawn sample's density
+        const SegmentSample<Real> t{g.t, g.pdf_t};
+        if (g.contributes()) g.over_equiangular = detail::OverEquiangular(*fit[i], t);
+        if (g.contributes() && measure_mixture)
+          g.over_mixture = detail::OverDensity<CauchyMixtureAngle<Real>>(*fit[i], step_query(i), t);
+      }
     }
   }
 }
