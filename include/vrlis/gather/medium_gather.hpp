@@ -100,18 +100,19 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 
 // Many VRLs against one camera segment, a renderer's inner loop: out[i] is
 // SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
-// (each query valid). Step one with VrlPoint runs kVrlPointBatch VRLs at once as vector
-// lanes (SampleVrlPoints: the same numbers as one at a time, to rounding); any other step one
-// is fitted once for a run of equal VRLs (a split gather's samples), which is the same density
-// and the same numbers. The rest runs in phases over up to kGatherChunk gathers, each a loop:
-// the camera steps' angle domains (all against the one camera segment), their fits and
-// offsets (each sampler's own code), then their points and the integrands. The first and
-// the last run in vector lanes, to rounding the one-at-a-time numbers (lane_math.hpp). One
-// gather is a long chain of dependent operations and one vector of lanes is still one
-// chain; the gathers of a phase are independent, and several vectors of them let the
-// processor overlap their chains (lanes over 8 gathers at a time gained 10%, over 32 a
-// factor 2 for equiangular sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera sampler and measure_mixture,
-// each sample also carries GatherSample::over_mixture (a CauchyMixture fit per sample).
+// (each query valid), in chunks of up to kGatherChunk gathers. Step one with VrlPoint runs
+// in vector lanes (SampleVrlPoints: the same numbers as one at a time, to rounding); any
+// other step one is fitted once for a run of equal VRLs (a split gather's samples), which is
+// the same density and the same numbers. The camera steps run in phases, each a loop: their
+// angle domains (all against the one camera segment), their fits and offsets (each sampler's
+// own code), then their points and the integrands. The first and the last run in vector
+// lanes too, to rounding the one-at-a-time numbers (lane_math.hpp). One gather is a long
+// chain of dependent operations and one vector of lanes is still one chain; the gathers of
+// a phase are independent, and several vectors of them let the processor overlap their
+// chains (lanes over 8 gathers at a time gained 10%, over 32 a factor 2 for equiangular
+// sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera sampler and
+// measure_mixture, each sample also carries GatherSample::over_mixture (a CauchyMixture fit
+// per sample).
 inline constexpr int kGatherChunk = 4 * kVrlPointBatch;
 
 namespace detail {
@@ -127,16 +128,13 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     const int n = std::min(kSize, count - first);
     const int lanes = (n + kVrlPointBatch - 1) / kVrlPointBatch * kVrlPointBatch;  // whole vectors
     SegmentSample<Real> v[kSize];
-    for (int i = 0; i < n; i += kVrlPointBatch) {
-      const int m = std::min(kVrlPointBatch, n - i);
-      if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
-        SampleVrlPoints(ValidQuery{}, camera, vrls + first + i, m, u_vrl + first + i, v + i);
-      } else {
-        for (int k = first + i; k < first + i + m; ++k) {
-          if (fitted < 0 || !SameVrl(vrls[fitted], vrls[k]))
-            step_one.emplace(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[k], medium}), fitted = k;
-          v[k - first] = step_one->sample_pdf(u_vrl[k]);
-        }
+    if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
+      SampleVrlPoints<kSize>(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
+    } else {
+      for (int k = first; k < first + n; ++k) {
+        if (fitted < 0 || !SameVrl(vrls[fitted], vrls[k]))
+          step_one.emplace(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[k], medium}), fitted = k;
+        v[k - first] = step_one->sample_pdf(u_vrl[k]);
       }
     }
     // The lanes' inputs, one array per number (the unused lanes repeat the first gather).

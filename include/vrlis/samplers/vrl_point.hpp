@@ -193,29 +193,31 @@ class VrlPoint {
   detail::VrlPointDensity<Real> density_;
 };
 
-// The number of VRLs SampleVrlPoints takes at once: eight float lanes (one AVX register).
+// The float lanes of one vector (AVX): SampleVrlPoints runs whole vectors of them.
 inline constexpr int kVrlPointBatch = 8;
 
-// Step one for count (1 to kVrlPointBatch) VRLs against one camera segment's line, each a
-// valid gather query with it: out[i] is VrlPoint(vrls[i]).sample_pdf(u[i]) to rounding (the
-// lanes take square roots by Newton steps, VrlPoint by the instruction). The VRLs are
-// independent, so the fit and the sample run as one loop over lanes that compilers
-// vectorise; the unused lanes repeat the first VRL.
-template <typename Real>
+// Step one for count (1 to kMax) VRLs against one camera segment's line, each a valid gather
+// query with it: out[i] is VrlPoint(vrls[i]).sample_pdf(u[i]) to rounding (the lanes take
+// square roots by Newton steps, VrlPoint by the instruction). The VRLs are independent, so
+// the fit and the sample run as one loop over lanes that compilers vectorise, in whole
+// vectors of kVrlPointBatch (the unused lanes repeat the first VRL); several vectors' chains
+// overlap in the processor (SampleMediumGathers takes kGatherChunk at once).
+template <int kMax = kVrlPointBatch, typename Real>
 void SampleVrlPoints(ValidQuery, const RaySegment<Real>& camera, const VrlSegment<Real>* vrls, int count,
                      const Real* u, SegmentSample<Real>* out) {
+  static_assert(kMax % kVrlPointBatch == 0, "whole vectors");
+  const int lanes = (count + kVrlPointBatch - 1) / kVrlPointBatch * kVrlPointBatch;
   // One array per coordinate, the layout vector loads want.
-  Real ox[kVrlPointBatch], oy[kVrlPointBatch], oz[kVrlPointBatch], dx[kVrlPointBatch], dy[kVrlPointBatch],
-      dz[kVrlPointBatch], length[kVrlPointBatch], uu[kVrlPointBatch];
-  for (int i = 0; i < kVrlPointBatch; ++i) {
+  Real ox[kMax], oy[kMax], oz[kMax], dx[kMax], dy[kMax], dz[kMax], length[kMax], uu[kMax];
+  for (int i = 0; i < lanes; ++i) {
     const VrlSegment<Real>& vrl = vrls[i < count ? i : 0];
     ox[i] = vrl.origin.x, oy[i] = vrl.origin.y, oz[i] = vrl.origin.z;
     dx[i] = vrl.dir.x, dy[i] = vrl.dir.y, dz[i] = vrl.dir.z;
     length[i] = vrl.length;
     uu[i] = u[i < count ? i : 0];
   }
-  Real t[kVrlPointBatch], pdf[kVrlPointBatch];
-  for (int i = 0; i < kVrlPointBatch; ++i) {
+  Real t[kMax], pdf[kMax];
+  for (int i = 0; i < lanes; ++i) {
     VrlPointQuery<Real> q = VrlPoint<Real>::LineQuery(camera, {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, length[i]});
     SegmentSample<Real> s = detail::SampleVrlPointDensity<true>(detail::FitVrlPointDensity<true>(q), uu[i]);
     bool representable = RepresentableLength(length[i]);  // else tmin with pdf 0, as VrlPoint
