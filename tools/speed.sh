@@ -236,7 +236,7 @@ for scene in scenes:
           " | " + " | ".join(f"{st[c] / st[base_name]:.2f}" for c in thesis()) + " |")
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json") if median(b)}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
-      "one VRL at a time; batched gather: one gather of SampleMediumGathers, eight VRLs against one camera segment, "
+      "one VRL at a time; batched gather: one gather of SampleMediumGathers, 32 VRLs (kGatherChunk) against one camera segment, "
       "the renderer's call; batched surface gather: one of SampleSurfaceGathers, eight VRLs seen from one surface "
       "point, the medium-to-surface gather, which makes most of the cube scene's gathers)\n")
 print("| method | g | whole gather | validate | step one (VrlPoint) | camera fit | camera sample + pdf | integrand | rest | batched gather | batched surface gather |")
