@@ -8,9 +8,10 @@
 //   position on the VRL, and the density to that rounding times its condition: an error dx in
 //   x = k (v - v0) moves p ~ 1 / sqrt(1 + x^2) by at most |dx| / 2 relatively, and rounding
 //   leaves |dx| within a few eps (1 + k L) (x passes near 0 only within k L of the ends);
-// - given that VRL point, the one-VRL gather's camera sample (FinishMediumGather) to rounding:
-//   the same code, the batch's in vector lanes (angle domains, points and weights), whose
-//   sines, exponentials and square roots round differently by a few ulp;
+// - given that VRL point, the one-VRL camera step's sample, in angle and density to the
+//   resolution of t (SameSegmentSample): the same code, the batch's in vector lanes (angle
+//   domains, points and weights), whose sines, exponentials and square roots round
+//   differently by a few ulp;
 // - a weight that is the integrand at its own two points over their densities, to rounding,
 //   and the connection's transmittance there. (Not the one-VRL gather's weight: where the
 //   camera point lies within a thousandth of the VRL point, the ulp of t that the lanes'
@@ -75,20 +76,16 @@ bool Close(Real a, Real b, double scale = 0) {
 }
 
 // A point's coordinates to the rounding of the point (a coordinate near 0 where origin and
-// offset cancel keeps only the absolute error of the larger ones), the rest to their own;
+// offset cancel keeps only the absolute error of the larger ones), the rest to their own.
+template <typename Real>
+bool SamePoint(vrlis::Vec3<Real> a, vrlis::Vec3<Real> b);
 template <typename Real>
 bool Same(const vrlis::GatherSample<Real>& a, const vrlis::GatherSample<Real>& b) {
-  auto size = [](vrlis::Vec3<Real> p, vrlis::Vec3<Real> q) {
-    return double(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(q.x), std::abs(q.y), std::abs(q.z)}));
-  };
-  const double camera = size(a.camera_point, b.camera_point), light = size(a.light_point, b.light_point);
-  const Real fa[] = {a.camera_point.x, a.camera_point.y, a.camera_point.z, a.light_point.x, a.light_point.y,
-                     a.light_point.z, a.t, a.pdf_t, a.v, a.pdf_v, a.transmittance, a.weight};
-  const Real fb[] = {b.camera_point.x, b.camera_point.y, b.camera_point.z, b.light_point.x, b.light_point.y,
-                     b.light_point.z, b.t, b.pdf_t, b.v, b.pdf_v, b.transmittance, b.weight};
-  for (int i = 0; i < 12; ++i)
-    if (!Close(fa[i], fb[i], i < 3 ? camera : i < 6 ? light : 0)) return false;
-  return true;
+  const Real fa[] = {a.t, a.pdf_t, a.v, a.pdf_v, a.transmittance, a.weight};
+  const Real fb[] = {b.t, b.pdf_t, b.v, b.pdf_v, b.transmittance, b.weight};
+  for (int i = 0; i < 6; ++i)
+    if (!Close(fa[i], fb[i])) return false;
+  return SamePoint(a.camera_point, b.camera_point) && SamePoint(a.light_point, b.light_point);
 }
 
 template <typename Real>
@@ -97,41 +94,41 @@ bool SamePoint(vrlis::Vec3<Real> a, vrlis::Vec3<Real> b) {
   return Close(a.x, b.x, size) && Close(a.y, b.y, size) && Close(a.z, b.z, size);
 }
 
-// The batch's camera sample s against the one-VRL camera step's, one, from the same VRL point
-// (sampler): to the resolution of s.t (4 ulp either side), the same angle and the sampler's
-// density, and the point at s.t. Not the same t: at a grazing angle t = u0 + h tan(theta)
-// turns an ulp of the angle's sine and cosine into 1e-5 of t, and the lanes' sine rounds
-// differently from libm's; and where the VRL point lies next to the camera line (h small)
-// an ulp of t is a wide angle, over which the density changes by 1e-4.
-template <typename Sampler, typename Real>
-bool SameCameraSample(const vrlis::GatherSample<Real>& s, vrlis::SegmentSample<Real> one, const Sampler& sampler,
-                      const vrlis::RaySegment<Real>& camera) {
-  Real lo = s.t, hi = s.t;
+// A batch's sample (t, pdf, point) on a segment against the one-at-a-time sampler's, one_t,
+// from the same query (sampler; at(t) the segment's point): to the resolution of t (4 ulp
+// either side), the same angle and the sampler's density, and the point at t. Not the same
+// t: at a grazing angle t = u0 + h tan(theta) turns an ulp of the angle's sine and cosine
+// into 1e-5 of t, and the lanes' sine rounds differently from libm's; and where the point
+// seen lies next to the segment's line (h small) an ulp of t is a wide angle, over which the
+// density changes by 1e-4.
+template <typename Sampler, typename Real, typename At>
+bool SameSegmentSample(Real t, Real pdf, vrlis::Vec3<Real> point, Real one_t, const Sampler& sampler, At&& at) {
+  Real lo = t, hi = t;
   for (int k = 0; k < 4; ++k)
     lo = std::nextafter(lo, -std::numeric_limits<Real>::infinity()),
     hi = std::nextafter(hi, std::numeric_limits<Real>::infinity());
-  // x is f(s.t) to rounding, or to f's change over the resolution of s.t.
+  // x is f(t) to rounding, or to f's change over the resolution of t.
   auto near = [&](double x, double (*f)(const Sampler&, Real), double scale) {
-    const double lo_f = f(sampler, lo), at = f(sampler, s.t), hi_f = f(sampler, hi);
-    const double spread = std::max({lo_f, at, hi_f}) - std::min({lo_f, at, hi_f});
-    return std::abs(x - at) <= 64 * std::numeric_limits<Real>::epsilon() * std::max(scale, std::abs(at)) + spread;
+    const double lo_f = f(sampler, lo), at_t = f(sampler, t), hi_f = f(sampler, hi);
+    const double spread = std::max({lo_f, at_t, hi_f}) - std::min({lo_f, at_t, hi_f});
+    return std::abs(x - at_t) <= 64 * std::numeric_limits<Real>::epsilon() * std::max(scale, std::abs(at_t)) + spread;
   };
-  auto angle = [](const Sampler& sm, Real t) { return double(sm.domain().offset_at(t)); };
-  auto density = [](const Sampler& sm, Real t) { return double(sm.pdf(t)); };
-  return near(sampler.domain().offset_at(one.t), angle, 1) && near(s.pdf_t, density, 0) &&
-         SamePoint(s.camera_point, camera.at(s.t));
+  auto angle = [](const Sampler& sm, Real x) { return double(sm.domain().offset_at(x)); };
+  auto density = [](const Sampler& sm, Real x) { return double(sm.pdf(x)); };
+  return near(sampler.domain().offset_at(one_t), angle, 1) && near(pdf, density, 0) && SamePoint(point, at(t));
 }
 
-// The sample's weight is the integrand at its own points over their densities, and its
-// transmittance the connection's, to rounding: of the distances too (the lanes' square roots
-// round differently by a few ulp), which the exponentials multiply by the optical depth; and
-// a subnormal weight keeps only absolute digits. The medium's factors in double: in float a
-// far sample's integrand is itself subnormal before its division by the densities.
+// The sample's weight is the integrand's factors f at its own points over its density pdf,
+// and its transmittance the connection's, to rounding: of the distances too (the lanes'
+// square roots round differently by a few ulp), which the exponentials multiply by the
+// optical depth; and a subnormal weight keeps only absolute digits. The medium's factors in
+// double: in float a far sample's integrand is itself subnormal before its division by the
+// density.
 template <typename Real>
-bool WeighsItsPoints(const vrlis::GatherSample<Real>& s, const vrlis::MediumGatherQuery<Real>& q) {
-  const vrlis::IntegrandFactors<Real> f = vrlis::MediumGatherFactors(q, s.t, s.v);
-  const double sigma_s = q.medium.sigma_s, sigma_t = q.medium.sigma_t;
-  const double weight = double(f.bare) / (double(s.pdf_t) * double(s.pdf_v)) * sigma_s * sigma_s *
+bool WeighsItsPoints(const vrlis::GatherSample<Real>& s, const vrlis::IntegrandFactors<Real>& f, double pdf,
+                     const vrlis::Medium<Real>& medium) {
+  const double sigma_s = medium.sigma_s, sigma_t = medium.sigma_t;
+  const double weight = double(f.bare) / pdf * (f.scatterings == 2 ? sigma_s * sigma_s : sigma_s) *
                         std::exp(-sigma_t * double(f.path_length));
   const double transmittance = std::exp(-sigma_t * double(f.connection));
   const double depth = 1 + sigma_t * double(s.path_length);
@@ -191,12 +188,15 @@ void BatchIsOneAtATime(bool widest) {
           ++contributing;
           REQUIRE(Close(batch[i].v, one.v, double(vrls[i].length)));
           REQUIRE(Close(batch[i].pdf_v, one.pdf_v, (1 + StepOneSpread(camera, vrls[i])) * double(one.pdf_v)));
-          REQUIRE(WeighsItsPoints(batch[i], q));
+          REQUIRE(WeighsItsPoints(batch[i], vrlis::MediumGatherFactors(q, batch[i].t, batch[i].v),
+                                  double(batch[i].pdf_t) * double(batch[i].pdf_v), medium));
           vrlis::WithGatherSamplers<Real>(method, [&](auto, auto step_two) {
             using CameraSampler = typename decltype(step_two)::type;
             const vrlis::Vec3<Real> y = q.vrl.at(batch[i].v);
             const CameraSampler sampler(vrlis::ValidQuery{}, vrlis::CameraStepQuery(q, y));
-            REQUIRE(SameCameraSample(batch[i], sampler.sample_pdf(u_camera[i]), sampler, camera));
+            REQUIRE(SameSegmentSample(batch[i].t, batch[i].pdf_t, batch[i].camera_point,
+                                      sampler.sample_pdf(u_camera[i]).t, sampler,
+                                      [&](Real t) { return camera.at(t); }));
             REQUIRE(SamePoint(batch[i].light_point, y));
           });
         }
@@ -213,7 +213,7 @@ void SurfaceBatchIsOneAtATime(bool widest) {
   const vrlis::Vec3<Real> point{0, 0, -2}, normal = vrlis::Normalize(vrlis::Vec3<Real>{Real(0.3), Real(-0.2), Real(-1)});
   for (vrlis::SegmentChoice method : vrlis::kSegmentSamplers) {
     int contributing = 0, compared = 0;
-    for (int n = 1; n <= 19; ++n) {
+    for (int n : {1, 2, 3, 5, 8, 9, 13, 17, 19, vrlis::kGatherChunk, vrlis::kGatherChunk + 3}) {
       std::vector<vrlis::VrlSegment<Real>> vrls;
       std::vector<Real> u;
       for (int i = 0; i < n; ++i) {

@@ -9,6 +9,11 @@
 
 namespace vrlis {
 
+// How many gathers a batched call (SampleMediumGathers, SampleSurfaceGathers) runs at once:
+// four vectors of eight float lanes, whose chains of dependent operations the processor
+// overlaps (one vector at a time is one chain).
+inline constexpr int kGatherChunk = 32;
+
 namespace detail {
 // The medium's share of a gather's integrand: sigma_s once per scattering event (1 or 2),
 // and the transmittance of the light's whole way through the medium. kLanes: for a loop

@@ -113,7 +113,6 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera sampler and
 // measure_mixture, each sample also carries GatherSample::over_mixture (a CauchyMixture fit
 // per sample).
-inline constexpr int kGatherChunk = 4 * kVrlPointBatch;
 
 namespace detail {
 template <typename StepOneSampler, typename CameraSampler, typename Real>
