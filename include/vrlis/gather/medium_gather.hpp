@@ -170,7 +170,8 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     for (int i = 0; i < lanes; ++i) {
       AnglePoint<Real> p = PointAtOffset<true>(frames[i], camera.tmin, camera.tmax, delta[i]);
       SegmentSample<Real> t{p.t, pdf_delta[i] * p.dtheta_dt}, vs{vt[i], vpdf[i]};
-      usable[i] = Usable(vs) & Usable(t);
+      const bool v_usable = Usable(vs), t_usable = Usable(t);
+      usable[i] = v_usable & t_usable;  // (not &&: a branch keeps the loop scalar)
       samples[i] = FinishWithCamera<true>(MediumGatherQuery<Real>{camera, vrl_of(i), medium}, vs, t);
     }
     for (int i = 0; i < n; ++i) {
