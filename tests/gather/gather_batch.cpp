@@ -78,7 +78,10 @@ bool Close(Real a, Real b, double scale = 0) {
 // A point's coordinates to the rounding of the point (a coordinate near 0 where origin and
 // offset cancel keeps only the absolute error of the larger ones), the rest to their own.
 template <typename Real>
-bool SamePoint(vrlis::Vec3<Real> a, vrlis::Vec3<Real> b);
+bool SamePoint(vrlis::Vec3<Real> a, vrlis::Vec3<Real> b) {
+  const double size = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+  return Close(a.x, b.x, size) && Close(a.y, b.y, size) && Close(a.z, b.z, size);
+}
 template <typename Real>
 bool Same(const vrlis::GatherSample<Real>& a, const vrlis::GatherSample<Real>& b) {
   const Real fa[] = {a.t, a.pdf_t, a.v, a.pdf_v, a.transmittance, a.weight};
@@ -88,11 +91,6 @@ bool Same(const vrlis::GatherSample<Real>& a, const vrlis::GatherSample<Real>& b
   return SamePoint(a.camera_point, b.camera_point) && SamePoint(a.light_point, b.light_point);
 }
 
-template <typename Real>
-bool SamePoint(vrlis::Vec3<Real> a, vrlis::Vec3<Real> b) {
-  const double size = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
-  return Close(a.x, b.x, size) && Close(a.y, b.y, size) && Close(a.z, b.z, size);
-}
 
 // A batch's sample (t, pdf, point) on a segment against the one-at-a-time sampler's, one_t,
 // from the same query (sampler; at(t) the segment's point): to the resolution of t (4 ulp

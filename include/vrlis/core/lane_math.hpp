@@ -17,7 +17,6 @@
 //
 // Log1pLanes and Expm1Lanes serve the hot path's hyperbolic functions (the VRL point of
 // step one), where glibc's log1pf and expm1f took a quarter of a gather; see each below.
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -308,17 +307,6 @@ template <bool kLanes, typename Real>
     return SqrtLanes(x);
   } else {
     return std::sqrt(x);
-  }
-}
-
-// x clamped to [lo, hi], NaN kept: in lanes by selects (std::min and std::max pass
-// references, and arithmetic on their result kept GCC from vectorising the loop).
-template <bool kLanes, typename Real>
-[[gnu::always_inline]] inline Real PickClamp(Real x, Real lo, Real hi) {
-  if constexpr (kLanes) {
-    return SelectLanes(x < lo, lo, SelectLanes(hi < x, hi, x));
-  } else {
-    return std::min(std::max(x, lo), hi);
   }
 }
 

@@ -24,6 +24,17 @@ Real SafeSqrt(Real x) { return std::sqrt(std::max(x, Real(0))); }
 template <typename Real>
 constexpr Real Clamp(Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); }
 
+// Clamp, in lanes by selects (std::min and std::max pass references, and arithmetic on
+// their result kept GCC from vectorising a loop); NaN kept either way.
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline Real PickClamp(Real x, Real lo, Real hi) {
+  if constexpr (kLanes) {
+    return SelectLanes(x < lo, lo, SelectLanes(hi < x, hi, x));
+  } else {
+    return Clamp(x, lo, hi);
+  }
+}
+
 // The precision a float computation runs in where rounding would reverse the order of
 // neighbouring samples: double for float.
 template <typename Real>

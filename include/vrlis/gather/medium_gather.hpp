@@ -113,7 +113,6 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 // sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera sampler and
 // measure_mixture, each sample also carries GatherSample::over_mixture (a CauchyMixture fit
 // per sample).
-
 namespace detail {
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathersAsBuilt(const RaySegment<Real>& camera, const Medium<Real>& medium,
@@ -125,7 +124,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
   int fitted = -1;
   for (int first = 0; first < count; first += kSize) {
     const int n = std::min(kSize, count - first);
-    const int lanes = (n + kVrlPointBatch - 1) / kVrlPointBatch * kVrlPointBatch;  // whole vectors
+    const int lanes = WholeLanes(n);
     SegmentSample<Real> v[kSize];
     if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
       SampleVrlPoints<kSize>(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
@@ -136,19 +135,13 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
         v[k - first] = step_one->sample_pdf(u_vrl[k]);
       }
     }
-    // The lanes' inputs, one array per number (the unused lanes repeat the first gather).
-    Real ox[kSize], oy[kSize], oz[kSize], dx[kSize], dy[kSize], dz[kSize], length[kSize], vt[kSize], vpdf[kSize];
-    for (int i = 0; i < lanes; ++i) {
-      const int j = i < n ? i : 0;
-      const VrlSegment<Real>& vrl = vrls[first + j];
-      ox[i] = vrl.origin.x, oy[i] = vrl.origin.y, oz[i] = vrl.origin.z;
-      dx[i] = vrl.dir.x, dy[i] = vrl.dir.y, dz[i] = vrl.dir.z;
-      length[i] = vrl.length, vt[i] = v[j].t, vpdf[i] = v[j].pdf;
-    }
-    auto vrl_of = [&](int i) { return VrlSegment<Real>{{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, length[i]}; };
+    // The lanes' inputs (the unused lanes repeat the first gather).
+    const VrlLanes<Real, kSize> vrl(vrls + first, n);
+    Real vt[kSize], vpdf[kSize];
+    for (int i = 0; i < lanes; ++i) vt[i] = v[i < n ? i : 0].t, vpdf[i] = v[i < n ? i : 0].pdf;
     AngleFrameLanes<Real, kSize> frames;
     for (int i = 0; i < lanes; ++i)
-      frames.set(i, ReduceToAngles<true>(vrl_of(i).at(vt[i]), camera.origin, camera.dir, camera.tmin, camera.tmax));
+      frames.set(i, ReduceToAngles<true>(vrl[i].at(vt[i]), camera.origin, camera.dir, camera.tmin, camera.tmax));
     std::optional<CameraSampler> fit[kSize];  // none where step one sampled nothing
     auto step_query = [&](int i) {
       MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
@@ -172,7 +165,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       SegmentSample<Real> t{p.t, pdf_delta[i] * p.dtheta_dt}, vs{vt[i], vpdf[i]};
       const bool v_usable = Usable(vs), t_usable = Usable(t);
       usable[i] = v_usable & t_usable;  // (not &&: a branch keeps the loop scalar)
-      samples[i] = FinishWithCamera<true>(MediumGatherQuery<Real>{camera, vrl_of(i), medium}, vs, t);
+      samples[i] = FinishWithCamera<true>(MediumGatherQuery<Real>{camera, vrl[i], medium}, vs, t);
     }
     for (int i = 0; i < n; ++i) {
       GatherSample<Real>& g = out[first + i];

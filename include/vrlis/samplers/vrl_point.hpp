@@ -196,6 +196,28 @@ class VrlPoint {
 // The float lanes of one vector (AVX): SampleVrlPoints runs whole vectors of them.
 inline constexpr int kVrlPointBatch = 8;
 
+namespace detail {
+// count gathers rounded up to whole vectors of lanes.
+inline int WholeLanes(int count) { return (count + kVrlPointBatch - 1) / kVrlPointBatch * kVrlPointBatch; }
+
+// VRLs as one array per number, the layout vector loads want, over whole vectors of lanes
+// (the unused lanes repeat the first VRL).
+template <typename Real, int kSize>
+struct VrlLanes {
+  Real ox[kSize], oy[kSize], oz[kSize], dx[kSize], dy[kSize], dz[kSize], length[kSize];
+
+  VrlLanes(const VrlSegment<Real>* vrls, int count) {
+    for (int i = 0; i < WholeLanes(count); ++i) {
+      const VrlSegment<Real>& vrl = vrls[i < count ? i : 0];
+      ox[i] = vrl.origin.x, oy[i] = vrl.origin.y, oz[i] = vrl.origin.z;
+      dx[i] = vrl.dir.x, dy[i] = vrl.dir.y, dz[i] = vrl.dir.z;
+      length[i] = vrl.length;
+    }
+  }
+  VrlSegment<Real> operator[](int i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, length[i]}; }
+};
+}  // namespace detail
+
 // Step one for count (1 to kMax) VRLs against one camera segment's line, each a valid gather
 // query with it: out[i] is VrlPoint(vrls[i]).sample_pdf(u[i]) to rounding (the lanes take
 // square roots by Newton steps, VrlPoint by the instruction). The VRLs are independent, so
@@ -206,21 +228,15 @@ template <int kMax = kVrlPointBatch, typename Real>
 void SampleVrlPoints(ValidQuery, const RaySegment<Real>& camera, const VrlSegment<Real>* vrls, int count,
                      const Real* u, SegmentSample<Real>* out) {
   static_assert(kMax % kVrlPointBatch == 0, "whole vectors");
-  const int lanes = (count + kVrlPointBatch - 1) / kVrlPointBatch * kVrlPointBatch;
-  // One array per coordinate, the layout vector loads want.
-  Real ox[kMax], oy[kMax], oz[kMax], dx[kMax], dy[kMax], dz[kMax], length[kMax], uu[kMax];
-  for (int i = 0; i < lanes; ++i) {
-    const VrlSegment<Real>& vrl = vrls[i < count ? i : 0];
-    ox[i] = vrl.origin.x, oy[i] = vrl.origin.y, oz[i] = vrl.origin.z;
-    dx[i] = vrl.dir.x, dy[i] = vrl.dir.y, dz[i] = vrl.dir.z;
-    length[i] = vrl.length;
-    uu[i] = u[i < count ? i : 0];
-  }
+  const int lanes = detail::WholeLanes(count);
+  const detail::VrlLanes<Real, kMax> vrl(vrls, count);
+  Real uu[kMax];
+  for (int i = 0; i < lanes; ++i) uu[i] = u[i < count ? i : 0];
   Real t[kMax], pdf[kMax];
   for (int i = 0; i < lanes; ++i) {
-    VrlPointQuery<Real> q = VrlPoint<Real>::LineQuery(camera, {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, length[i]});
+    VrlPointQuery<Real> q = VrlPoint<Real>::LineQuery(camera, vrl[i]);
     SegmentSample<Real> s = detail::SampleVrlPointDensity<true>(detail::FitVrlPointDensity<true>(q), uu[i]);
-    bool representable = RepresentableLength(length[i]);  // else tmin with pdf 0, as VrlPoint
+    bool representable = RepresentableLength(vrl.length[i]);  // else tmin with pdf 0, as VrlPoint
     t[i] = SelectLanes(representable, s.t, Real(0));
     pdf[i] = SelectLanes(representable, s.pdf, Real(0));
   }
