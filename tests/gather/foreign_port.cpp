@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "gather_instances.hpp"
+
 namespace tinyvrl {  // the foreign renderer's own types, in its own style
 
 struct Vec {

@@ -40,6 +40,8 @@
 #include <random>
 #include <vector>
 
+#include "gather_instances.hpp"
+
 namespace {
 
 template <typename Real>

@@ -20,6 +20,8 @@
 #include <random>
 #include <vector>
 
+#include "gather_instances.hpp"
+
 namespace {
 
 using Real = float;

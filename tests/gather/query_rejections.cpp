@@ -6,6 +6,8 @@
 
 #include <limits>
 
+#include "gather_instances.hpp"
+
 namespace {
 
 using E = vrlis::QueryError;
