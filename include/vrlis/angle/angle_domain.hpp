@@ -5,6 +5,7 @@
 // turns dt / |p - x(t)|^2 into dtheta / h. Samplers work with the offset
 // delta = theta - theta_a in [0, width] rather than theta itself: narrow intervals and
 // peaks near an endpoint keep all their digits, and tan never sees pi/2.
+#include <cstdint>
 #include <limits>
 
 #include "../core/math.hpp"
@@ -34,14 +35,14 @@ struct AngleFrame {
 template <typename Real, int kSize>
 struct AngleFrameLanes {
   Real u0[kSize], h[kSize], tan_a[kSize], stretch[kSize], width[kSize], nx[kSize], ny[kSize], nz[kSize];
-  bool on_line[kSize];
+  std::int32_t on_line[kSize];  // (as wide as the floats: a loop that mixes bytes with them stays scalar)
 
   void set(int i, const AngleFrame<Real>& f) {
     u0[i] = f.u0, h[i] = f.h, tan_a[i] = f.tan_a, stretch[i] = f.stretch, width[i] = f.width;
-    nx[i] = f.n.x, ny[i] = f.n.y, nz[i] = f.n.z, on_line[i] = f.on_line;
+    nx[i] = f.n.x, ny[i] = f.n.y, nz[i] = f.n.z, on_line[i] = f.on_line ? 1 : 0;
   }
   AngleFrame<Real> operator[](int i) const {
-    return {u0[i], h[i], tan_a[i], stretch[i], width[i], {nx[i], ny[i], nz[i]}, on_line[i]};
+    return {u0[i], h[i], tan_a[i], stretch[i], width[i], {nx[i], ny[i], nz[i]}, on_line[i] != 0};
   }
 };
 

@@ -215,6 +215,9 @@ class PhaseProduct {
   }
   Real lower_pole() const { return lower_; }  // the offset of theta = -pi/2
 
+  template <int kSize>
+  struct Lanes;
+
   // Each lobe's largest value, as a numerator over a denominator: a fit that needs both the
   // value and its reciprocal then divides once for each, side by side.
   PhaseFraction<Real> segment_peak_value() const { return {HenyeyGreensteinPeak(g_), 1}; }
@@ -237,6 +240,62 @@ class PhaseProduct {
   Real width_;
   Real lower_, upper_;
   Real r_ = 0, one_minus_r_ = 1, theta_e_ = 0;
+};
+
+// The targets of a batch's camera steps, one per lane, for a piecewise-linear fit of all of
+// them at once (PiecewiseLinearAngle::SampleLanes): the medium-to-medium gathers' queries, a
+// Henyey-Greenstein point lobe about each VRL's direction with the segment's g
+// (MediumToMediumQuery). Each lane holds what the constructor and evaluate() compute for its
+// query, in the same operations (square roots by Newton steps in lanes: within 3 ulp).
+template <typename Real>
+template <int kSize>
+struct PhaseProduct<Real>::Lanes {
+  Real width[kSize], theta_e[kSize], r[kSize];
+  // The two lobes' detail::LobeShape, one array per number (the scale is g's alone).
+  Real a_sin[kSize], a_cos[kSize], a_base[kSize], a_slope[kSize];
+  Real b_sin[kSize], b_cos[kSize], b_base[kSize], b_slope[kSize];
+  Real g = 0, scale = 0;
+
+  // Lanes [0, lanes) from the queries' angle frames and the lobes' axes (one array per
+  // coordinate); dir is the camera segment's.
+  template <Accuracy kAccuracy>
+  void build(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y, const Real* axis_z,
+             Vec3<Real> dir, Real segment_g, int lanes) {
+    g = segment_g;
+    scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
+    for (int i = 0; i < lanes; ++i) {
+      const Real A = frames.tan_a[i];
+      const Real lower = detail::PolesOf<true>(A).lower;
+      const detail::LobeInPlane<Real> lobe = detail::ProjectLobe<true>(
+          {axis_x[i], axis_y[i], axis_z[i]}, {frames.nx[i], frames.ny[i], frames.nz[i]}, dir, A, frames.on_line[i] != 0);
+      width[i] = frames.width[i], theta_e[i] = lobe.theta_e, r[i] = lobe.r;
+      const auto a = detail::LobeShape<Real>::Of(g, 1, 0, SinCosLanes<kAccuracy>(lower / 2));
+      const auto b = detail::LobeShape<Real>::Of(g, lobe.r, lobe.one_minus_r, SinCosLanes<kAccuracy>(lobe.theta_e / 2));
+      a_sin[i] = a.from_sin, a_cos[i] = a.from_cos, a_base[i] = a.base, a_slope[i] = a.slope;
+      b_sin[i] = b.from_sin, b_cos[i] = b.from_cos, b_base[i] = b.base, b_slope[i] = b.slope;
+    }
+  }
+
+  // splits() of each lane: count[i] offsets in split[0][i], ...
+  void splits(int lanes, Real (*split)[kSize], int* count) const {
+    const Real flip = g < 0 ? kPi<Real> : Real(0);
+    for (int i = 0; i < lanes; ++i) {
+      const Real peak = detail::NearestPeak(theta_e[i] + flip, width[i]);
+      split[0][i] = peak;
+      const bool flat = (r[i] == 0) | (g == 0);  // point_lobe_flat()
+      count[i] = static_cast<int>(!flat & (peak > 0) & (peak < width[i]));
+    }
+  }
+
+  // evaluate() at delta[i] for every lane i.
+  template <Accuracy kAccuracy>
+  void evaluate(int lanes, const Real* delta, Real* out) const {
+    for (int i = 0; i < lanes; ++i) {
+      const detail::LobeShape<Real> a{a_sin[i], a_cos[i], a_base[i], a_slope[i], scale};
+      const detail::LobeShape<Real> b{b_sin[i], b_cos[i], b_base[i], b_slope[i], scale};
+      out[i] = detail::LobeProduct<kAccuracy>(a, b, SinCosLanes<kAccuracy>(delta[i] / 2));
+    }
+  }
 };
 
 }  // namespace vrlis

@@ -5,6 +5,7 @@
 //   sigma_s^2 rho(w_c . w) rho(-w_l . w) T(t - tmin) T(v) T(|y - x|) / |y - x|^2,
 // w the unit vector from the camera point x(t) to the VRL point y(v).
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -98,6 +99,19 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
   return FinishMediumGather<CameraSampler>(ValidQuery{}, q, StepOneSampler(ValidQuery{}, q).sample_pdf(u_vrl), u_camera);
 }
 
+namespace detail {
+// Camera samplers that fit a whole batch in lanes: a piecewise-linear fit of a target with a
+// form in lanes (Target::Lanes, built from the medium gathers' queries).
+template <typename S, typename = void>
+struct FitsInLanes : std::false_type {};
+template <typename R, int kNodes, typename T>
+struct FitsInLanes<SegmentSampler<PiecewiseLinearAngle<R, kNodes, T>>, std::void_t<typename T::template Lanes<1>>>
+    : std::true_type {
+  using Fit = PiecewiseLinearAngle<R, kNodes, T>;
+  using Target = T;
+};
+}  // namespace detail
+
 // Many VRLs against one camera segment, a renderer's inner loop: out[i] is
 // SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
 // (each query valid), in chunks of up to kGatherChunk gathers. Step one with VrlPoint runs
@@ -147,17 +161,32 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
       return CameraStepQuery(q, q.vrl.at(v[i].t));
     };
-    for (int i = 0; i < n; ++i)
-      if (detail::Usable(v[i])) {
-        const SegmentQuery<Real> q = step_query(i);
-        fit[i].emplace(ValidQuery{}, q, AngleDomain<Real>(q, frames[i]));
-      }
     Real delta[kSize] = {}, pdf_delta[kSize] = {};  // pdf 0: nothing sampled
-    for (int i = 0; i < n; ++i)
-      if (fit[i]) {
-        SegmentSample<Real> d = fit[i]->sample_offset(u_camera[first + i]);
-        delta[i] = d.t, pdf_delta[i] = d.pdf;
-      }
+    if constexpr (FitsInLanes<CameraSampler>::value) {
+      using Fit = typename FitsInLanes<CameraSampler>::Fit;
+      typename FitsInLanes<CameraSampler>::Target::template Lanes<kSize> targets;
+      targets.template build<Accuracy::Fit>(frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g, lanes);
+      Real u[kSize];
+      for (int i = 0; i < lanes; ++i) u[i] = u_camera[first + (i < n ? i : 0)];
+      SegmentSample<Real> d[kSize];
+      Fit::template SampleLanes<kSize>(targets, u, lanes, d);
+      // Where SegmentSampler samples nothing (sample_offset).
+      const bool representable = RepresentableLength(camera.tmax - camera.tmin);
+      for (int i = 0; i < n; ++i)
+        if (detail::Usable(v[i]) && frames.width[i] >= std::numeric_limits<Real>::min() && representable)
+          delta[i] = d[i].t, pdf_delta[i] = d[i].pdf;
+    } else {
+      for (int i = 0; i < n; ++i)
+        if (detail::Usable(v[i])) {
+          const SegmentQuery<Real> q = step_query(i);
+          fit[i].emplace(ValidQuery{}, q, AngleDomain<Real>(q, frames[i]));
+        }
+      for (int i = 0; i < n; ++i)
+        if (fit[i]) {
+          SegmentSample<Real> d = fit[i]->sample_offset(u_camera[first + i]);
+          delta[i] = d.t, pdf_delta[i] = d.pdf;
+        }
+    }
     GatherSample<Real> samples[kSize];
     bool usable[kSize];
     for (int i = 0; i < lanes; ++i) {

@@ -7,6 +7,7 @@
 // is core/piecewise_linear.hpp's. (FullProduct splits at its target's peaks too.)
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <string_view>
 
 #include "../angle/full_product.hpp"
@@ -39,6 +40,98 @@ class PiecewiseLinearAngle {
   SegmentSample<Real> sample_pdf(Real u) const {
     SegmentSample<Real> s = fit_.sample_pdf(u);
     return {s.t * width_, s.pdf / width_};
+  }
+
+  // A batch's fits, each sampled once, in vector lanes: lane i of `target` (a
+  // Target::Lanes<kSize>, built for lanes [0, lanes)) fitted as above and sampled at u[i],
+  // out[i] what sample_pdf(u[i]) returns, to rounding. One loop over the lanes per step
+  // (the splits, each node's offset and value, the normalisation, the areas, the interval
+  // search), then the closed-form inversion one lane at a time (in double for float).
+  template <int kSize, typename TargetLanes>
+  static void SampleLanes(const TargetLanes& target, const Real* u, int lanes, SegmentSample<Real>* out) {
+    constexpr int kLast = kNodes - 1;
+    constexpr Real kInf = std::numeric_limits<Real>::infinity();
+    // Each lane's sides (as Fit): side k in [0, 2] runs from node last_k-1 (offset end_k-1) to
+    // node last_k (offset end_k), with last_-1 = 0, end_-1 = 0, last_2 = kLast, end_2 = 1; a lane
+    // with fewer splits has its unused sides end at the last node.
+    Real split[2][kSize];
+    int count[kSize], last0[kSize], last1[kSize];
+    Real end0[kSize], end1[kSize];
+    target.splits(lanes, split, count);
+    auto side_end = [&](int k, int i, int n, int first, int& last) {
+      const bool real = k < n;
+      const Real e = SelectLanes(real, split[k][i] / target.width[i], Real(1));
+      const Real safe = SelectLanes((e >= 0) & (e <= 1), e, Real(0));  // (NaN in a lane left unused)
+      const int rounded = static_cast<int>(safe * kLast + Real(0.5));
+      last = real ? std::min(std::max(rounded, first + 1), kLast - (n - k)) : kLast;
+      return e;
+    };
+    for (int i = 0; i < lanes; ++i) {
+      const int n = std::min(count[i], kNodes - 2);
+      end0[i] = side_end(0, i, n, 0, last0[i]);
+      end1[i] = side_end(1, i, n, last0[i], last1[i]);
+    }
+    Real node[kNodes][kSize], value[kNodes][kSize];
+    const Real* warp = WarpTable()[0].data();  // row-major, kNodes per row
+    for (int j = 0; j < kNodes; ++j) {
+      Real at[kSize];
+      for (int i = 0; i < lanes; ++i) {
+        const bool past0 = j > last0[i], past1 = j > last1[i];
+        const int first = past1 ? last1[i] : past0 ? last0[i] : 0, to = past1 ? kLast : past0 ? last1[i] : last0[i];
+        const Real start = SelectLanes(past1, end1[i], SelectLanes(past0, end0[i], Real(0)));
+        const Real stop = SelectLanes(past1, Real(1), SelectLanes(past0, end1[i], end0[i]));
+        const Real warped = start + (stop - start) * warp[(to - first) * kNodes + (j - first)];
+        node[j][i] = SelectLanes(j == to, stop, warped);
+        at[i] = node[j][i] * target.width[i];
+      }
+      target.template evaluate<Accuracy::Fit>(lanes, at, value[j]);
+    }
+    // Values in units of the largest, above the floor; the running areas.
+    Real largest[kSize], area[kNodes][kSize];
+    for (int i = 0; i < lanes; ++i) largest[i] = value[0][i], area[0][i] = 0;
+    for (int j = 1; j < kNodes; ++j)
+      for (int i = 0; i < lanes; ++i) largest[i] = SelectLanes(largest[i] < value[j][i], value[j][i], largest[i]);
+    for (int j = 0; j < kNodes; ++j)
+      for (int i = 0; i < lanes; ++i) {
+        const Real relative = value[j][i] / largest[i];
+        const bool scaled = (largest[i] > 0) & (largest[i] < kInf);
+        value[j][i] = SelectLanes(scaled, SelectLanes(relative < Target::kRelativeFloor, Target::kRelativeFloor, relative),
+                                  value[j][i]);
+      }
+    for (int j = 0; j < kLast; ++j)
+      for (int i = 0; i < lanes; ++i)
+        area[j + 1][i] = area[j][i] + (value[j][i] + value[j + 1][i]) / 2 * (node[j + 1][i] - node[j][i]);
+    const Real* integral = area[kLast];
+    for (int i = 0; i < lanes; ++i)
+      if (!(integral[i] > 0 && integral[i] < kInf)) {  // a target zero (or NaN) at every node: uniform, as Fit
+        for (int j = 0; j < kNodes; ++j) value[j][i] = 1;
+        for (int j = 0; j < kLast; ++j) area[j + 1][i] = area[j][i] + (node[j + 1][i] - node[j][i]);
+      }
+    // PiecewiseLinear::sample_pdf: the interval j as the count of running areas at or below
+    // the target (FindInterval), then its ends picked by selects.
+    Real target_area[kSize], a0[kSize], a1[kSize], f0[kSize], f1[kSize], x0[kSize], x1[kSize];
+    int interval[kSize];
+    for (int i = 0; i < lanes; ++i) target_area[i] = u[i] * integral[i], interval[i] = 0;
+    for (int m = 1; m < kLast; ++m)
+      for (int i = 0; i < lanes; ++i) interval[i] += area[m][i] <= target_area[i];
+    for (int i = 0; i < lanes; ++i) a0[i] = a1[i] = f0[i] = f1[i] = x0[i] = x1[i] = 0;
+    for (int m = 0; m < kLast; ++m)
+      for (int i = 0; i < lanes; ++i) {
+        const bool here = interval[i] == m;
+        a0[i] = SelectLanes(here, area[m][i], a0[i]), a1[i] = SelectLanes(here, area[m + 1][i], a1[i]);
+        f0[i] = SelectLanes(here, value[m][i], f0[i]), f1[i] = SelectLanes(here, value[m + 1][i], f1[i]);
+        x0[i] = SelectLanes(here, node[m][i], x0[i]), x1[i] = SelectLanes(here, node[m + 1][i], x1[i]);
+      }
+    Real v[kSize];
+    for (int i = 0; i < lanes; ++i) {
+      const Real width = a1[i] - a0[i];
+      v[i] = SelectLanes(width > 0, PickClamp<true>((target_area[i] - a0[i]) / width, Real(0), Real(1)), Real(0));
+    }
+    for (int i = 0; i < lanes; ++i) {
+      const Real s = SampleLinear(v[i], f0[i], f1[i]);
+      const Real x = Clamp(x0[i] + s * (x1[i] - x0[i]), Real(0), Real(1));
+      out[i] = {x * target.width[i], Lerp(s, f0[i], f1[i]) / integral[i] / target.width[i]};
+    }
   }
 
   // The node offsets (delta) of the fit.
