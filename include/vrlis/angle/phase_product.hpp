@@ -250,7 +250,7 @@ class PhaseProduct {
 template <typename Real>
 template <int kSize>
 struct PhaseProduct<Real>::Lanes {
-  Real width[kSize], theta_e[kSize], r[kSize];
+  Real width[kSize], lower[kSize], upper[kSize], theta_e[kSize], r[kSize], one_minus_r[kSize];
   // The two lobes' detail::LobeShape, one array per number (the scale is g's alone).
   Real a_sin[kSize], a_cos[kSize], a_base[kSize], a_slope[kSize];
   Real b_sin[kSize], b_cos[kSize], b_base[kSize], b_slope[kSize];
@@ -265,25 +265,30 @@ struct PhaseProduct<Real>::Lanes {
     scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
     for (int i = 0; i < lanes; ++i) {
       const Real A = frames.tan_a[i];
-      const Real lower = detail::PolesOf<true>(A).lower;
+      const detail::PoleOffsets<Real> poles = detail::PolesOf<true>(A);
       const detail::LobeInPlane<Real> lobe = detail::ProjectLobe<true>(
           {axis_x[i], axis_y[i], axis_z[i]}, {frames.nx[i], frames.ny[i], frames.nz[i]}, dir, A, frames.on_line[i] != 0);
-      width[i] = frames.width[i], theta_e[i] = lobe.theta_e, r[i] = lobe.r;
-      const auto a = detail::LobeShape<Real>::Of(g, 1, 0, SinCosLanes<kAccuracy>(lower / 2));
+      width[i] = frames.width[i], lower[i] = poles.lower, upper[i] = poles.upper;
+      theta_e[i] = lobe.theta_e, r[i] = lobe.r, one_minus_r[i] = lobe.one_minus_r;
+      const auto a = detail::LobeShape<Real>::Of(g, 1, 0, SinCosLanes<kAccuracy>(poles.lower / 2));
       const auto b = detail::LobeShape<Real>::Of(g, lobe.r, lobe.one_minus_r, SinCosLanes<kAccuracy>(lobe.theta_e / 2));
       a_sin[i] = a.from_sin, a_cos[i] = a.from_cos, a_base[i] = a.base, a_slope[i] = a.slope;
       b_sin[i] = b.from_sin, b_cos[i] = b.from_cos, b_base[i] = b.base, b_slope[i] = b.slope;
     }
   }
 
+  // point_lobe_flat() and point_peak() of lane i.
+  [[gnu::always_inline]] bool point_lobe_flat(int i) const { return (r[i] == 0) | (g == 0); }
+  [[gnu::always_inline]] Real point_peak(int i) const {
+    return detail::NearestPeak(theta_e[i] + (g < 0 ? kPi<Real> : Real(0)), width[i]);
+  }
+
   // splits() of each lane: count[i] offsets in split[0][i], ...
   void splits(int lanes, Real (*split)[kSize], int* count) const {
-    const Real flip = g < 0 ? kPi<Real> : Real(0);
     for (int i = 0; i < lanes; ++i) {
-      const Real peak = detail::NearestPeak(theta_e[i] + flip, width[i]);
+      const Real peak = point_peak(i);
       split[0][i] = peak;
-      const bool flat = (r[i] == 0) | (g == 0);  // point_lobe_flat()
-      count[i] = static_cast<int>(!flat & (peak > 0) & (peak < width[i]));
+      count[i] = static_cast<int>(!point_lobe_flat(i) & (peak > 0) & (peak < width[i]));
     }
   }
 

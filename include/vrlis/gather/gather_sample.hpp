@@ -19,7 +19,7 @@ namespace detail {
 // and the transmittance of the light's whole way through the medium. kLanes: for a loop
 // over a batch's gathers (lane_math.hpp).
 template <bool kLanes = false, typename Real>
-Real MediumFactor(Real sigma_s, Real sigma_t, int scatterings, Real path_length) {
+[[gnu::always_inline]] inline Real MediumFactor(Real sigma_s, Real sigma_t, int scatterings, Real path_length) {
   return Pick<kLanes>(scatterings == 2, sigma_s * sigma_s, sigma_s) * PickExp<kLanes>(-sigma_t * path_length);
 }
 }  // namespace detail
@@ -102,8 +102,10 @@ bool Usable(SegmentSample<Real> s) {
 // Fills the connection and the weights from the integrand's factors and the pdf; any
 // non-finite or non-positive outcome becomes "nothing to trace" (never a NaN in an image).
 // kLanes: for a loop over a batch's gathers.
+// (Always inlined: in the batch's lanes loop a call keeps the loop scalar, and GCC stopped
+// inlining it once the batch's frame grew.)
 template <bool kLanes = false, typename Real>
-GatherSample<Real> Finish(GatherSample<Real> s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
+[[gnu::always_inline]] inline GatherSample<Real> Finish(GatherSample<Real> s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
   s.bare_weight = FiniteOrZero<kLanes>(f.bare / pdf);
   s.path_length = f.path_length;
   s.scatterings = f.scatterings;

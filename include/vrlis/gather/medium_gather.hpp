@@ -100,15 +100,13 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 }
 
 namespace detail {
-// Camera samplers that fit a whole batch in lanes: a piecewise-linear fit of a target with a
-// form in lanes (Target::Lanes, built from the medium gathers' queries).
+// Camera samplers whose distribution fits a whole batch in lanes: D::SampleLanes over a
+// D::TargetLanes, which the medium gathers' queries build.
 template <typename S, typename = void>
 struct FitsInLanes : std::false_type {};
-template <typename R, int kNodes, typename T>
-struct FitsInLanes<SegmentSampler<PiecewiseLinearAngle<R, kNodes, T>>, std::void_t<typename T::template Lanes<1>>>
-    : std::true_type {
-  using Fit = PiecewiseLinearAngle<R, kNodes, T>;
-  using Target = T;
+template <typename D>
+struct FitsInLanes<SegmentSampler<D>, std::void_t<typename D::template TargetLanes<1>>> : std::true_type {
+  using Fit = D;
 };
 }  // namespace detail
 
@@ -156,7 +154,9 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     AngleFrameLanes<Real, kSize> frames;
     for (int i = 0; i < lanes; ++i)
       frames.set(i, ReduceToAngles<true>(vrl[i].at(vt[i]), camera.origin, camera.dir, camera.tmin, camera.tmax));
-    std::optional<CameraSampler> fit[kSize];  // none where step one sampled nothing
+    // One-at-a-time fits, none where step one sampled nothing (a sampler fitted in lanes
+    // needs none; their frame kept GCC from inlining the lanes' finish).
+    std::optional<CameraSampler> fit[FitsInLanes<CameraSampler>::value ? 1 : kSize];
     auto step_query = [&](int i) {
       MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
       return CameraStepQuery(q, q.vrl.at(v[i].t));
@@ -164,7 +164,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     Real delta[kSize] = {}, pdf_delta[kSize] = {};  // pdf 0: nothing sampled
     if constexpr (FitsInLanes<CameraSampler>::value) {
       using Fit = typename FitsInLanes<CameraSampler>::Fit;
-      typename FitsInLanes<CameraSampler>::Target::template Lanes<kSize> targets;
+      typename Fit::template TargetLanes<kSize> targets;
       targets.template build<Accuracy::Fit>(frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g, lanes);
       Real u[kSize];
       for (int i = 0; i < lanes; ++i) u[i] = u_camera[first + (i < n ? i : 0)];

@@ -6,6 +6,8 @@
 // (1 + i x)(1 - i x_a), i.e. of z(delta) = gamma (1 + x x_a) + i delta once scaled by gamma.
 // Working with z keeps the truncated mass exact for tiny gamma and peaks near an end.
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -33,6 +35,9 @@ class TruncatedCauchy {
   // lobe's peak value), which keeps one division off the fit's critical path.
   TruncatedCauchy(Real location, Real scale, Real inv_scale, Real width)
       : location_(location), scale_(scale), inv_scale_(inv_scale), width_(width), mass_(primitive(width)) {}
+  // With its mass computed elsewhere (in lanes: CauchyLobesLanes).
+  TruncatedCauchy(Real location, Real scale, Real inv_scale, Real width, Real mass)
+      : location_(location), scale_(scale), inv_scale_(inv_scale), width_(width), mass_(mass) {}
 
   // gamma / ((delta - mu)^2 + gamma^2): pi times the Cauchy density; integrates to mass().
   Real density(Real delta) const { return scale_ / (Sqr(delta - location_) + Sqr(scale_)); }
@@ -66,16 +71,16 @@ class TruncatedCauchy {
 template <typename Real>
 struct CauchyLobes {
   std::array<TruncatedCauchy<Real>, 2> lobe;
-  std::array<bool, 2> from_segment{};  // which phase lobe each Cauchy stands for
   int count = 0;
 
+  CauchyLobes() = default;
   explicit CauchyLobes(const PhaseProduct<Real>& target) {
-    if (!target.segment_lobe_flat()) Add(target.segment_peak(), target.segment_peak_value(), target.width(), true);
-    if (!target.point_lobe_flat()) Add(target.point_peak(), target.point_peak_value(), target.width(), false);
+    if (!target.segment_lobe_flat()) Add(target.segment_peak(), target.segment_peak_value(), target.width());
+    if (!target.point_lobe_flat()) Add(target.point_peak(), target.point_peak_value(), target.width());
   }
 
  private:
-  void Add(Real peak, PhaseFraction<Real> peak_value, Real width, bool segment) {
+  void Add(Real peak, PhaseFraction<Real> peak_value, Real width) {
     // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
     // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
     Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;
@@ -90,8 +95,67 @@ struct CauchyLobes {
     if (!(extent >= scale * std::sqrt(eps)) || 2 * width < eps * distance) return;
     Real resolvable = 64 * eps * extent;
     bool widened = scale < resolvable;
-    lobe[count] = TruncatedCauchy<Real>(peak, widened ? resolvable : scale, widened ? 1 / resolvable : inv_scale, width);
-    from_segment[count++] = segment;
+    lobe[count++] = TruncatedCauchy<Real>(peak, widened ? resolvable : scale, widened ? 1 / resolvable : inv_scale, width);
+  }
+};
+
+// The fits of a batch's camera steps (PhaseProduct::Lanes, one query per lane) in vector
+// lanes, CauchyLobes' rules for each lobe computed in every lane and picked by selects
+// (square roots by Newton steps: within 3 ulp of CauchyLobes). lobes(i) is lane i's fit.
+template <typename Real, int kSize>
+struct CauchyLobesLanes {
+  Real location[2][kSize], scale[2][kSize], inv_scale[2][kSize], mass[2][kSize], width[kSize];
+  std::int32_t count[kSize];
+
+  CauchyLobesLanes(const typename PhaseProduct<Real>::template Lanes<kSize>& target, int lanes) {
+    const Real g = target.g, ag = std::abs(g), sqrt_eps = std::sqrt(std::numeric_limits<Real>::epsilon());
+    const PhaseFraction<Real> segment_value{HenyeyGreensteinPeak(g), 1};
+    for (int i = 0; i < lanes; ++i) {
+      const Real w = target.width[i];
+      const Lobe segment = Fit(g == 0, SelectLanes(g > 0, target.lower[i], target.upper[i]), segment_value, w, sqrt_eps);
+      const Real d = HenyeyGreensteinBase<true>(ag, target.one_minus_r[i], 1 + target.r[i]);
+      const Lobe point = Fit(target.point_lobe_flat(i), target.point_peak(i),
+                             {(1 - ag) * (1 + ag), 4 * kPi<Real> * d * SqrtLanes(d)}, w, sqrt_eps);
+      // In CauchyLobes' order: the segment's first, where it is kept.
+      location[0][i] = SelectLanes(segment.kept, segment.location, point.location);
+      scale[0][i] = SelectLanes(segment.kept, segment.scale, point.scale);
+      inv_scale[0][i] = SelectLanes(segment.kept, segment.inv_scale, point.inv_scale);
+      mass[0][i] = SelectLanes(segment.kept, segment.mass, point.mass);
+      location[1][i] = point.location, scale[1][i] = point.scale, inv_scale[1][i] = point.inv_scale;
+      mass[1][i] = point.mass, width[i] = w;
+      count[i] = std::int32_t(segment.kept) + std::int32_t(point.kept);
+    }
+  }
+
+  CauchyLobes<Real> lobes(int i) const {
+    CauchyLobes<Real> out;
+    out.count = count[i];
+    for (int k = 0; k < count[i]; ++k)
+      out.lobe[k] = TruncatedCauchy<Real>(location[k][i], scale[k][i], inv_scale[k][i], width[i], mass[k][i]);
+    return out;
+  }
+
+ private:
+  struct Lobe {
+    Real location, scale, inv_scale, mass;
+    bool kept;
+  };
+  // CauchyLobes::Add for one lane, branch-free.
+  [[gnu::always_inline]] static Lobe Fit(bool flat, Real peak, PhaseFraction<Real> peak_value, Real width,
+                                         Real sqrt_eps) {
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;
+    const Real scale = peak_value.den / pi_num, inv_scale = pi_num / peak_value.den;
+    const Real distance = SelectLanes(peak < 0, -peak, SelectLanes(peak > width, peak - width, Real(0)));
+    const Real resolvable = 64 * eps * extent;
+    const bool widened = scale < resolvable;
+    Lobe out;
+    out.location = peak;
+    out.scale = SelectLanes(widened, resolvable, scale);
+    out.inv_scale = SelectLanes(widened, 1 / resolvable, inv_scale);
+    out.mass = Atan2Lanes(width, out.scale + peak * ((peak - width) * out.inv_scale));  // primitive(width)
+    out.kept = !flat & (extent >= scale * sqrt_eps) & !(2 * width < eps * distance);
+    return out;
   }
 };
 

@@ -22,6 +22,17 @@ class CauchyMixtureAngle {
   using Real = R;
   CauchyMixtureAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : CauchyMixtureAngle(PhaseProduct<Real>(q, dom)) {}
 
+  // A batch's fits in vector lanes (CauchyLobesLanes; Henyey-Greenstein point lobes, two
+  // components), each then sampled at u[i] one lane at a time: out[i] is sample_pdf(u[i]) of
+  // lane i's query, to rounding.
+  template <int kSize>
+  using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize>;
+  template <int kSize>
+  static void SampleLanes(const TargetLanes<kSize>& target, const Real* u, int lanes, SegmentSample<Real>* out) {
+    const CauchyLobesLanes<Real, kSize> fits(target, lanes);
+    for (int i = 0; i < lanes; ++i) out[i] = CauchyMixtureAngle(fits.lobes(i), fits.width[i], 2).sample_pdf(u[i]);
+  }
+
   // Component k = floor(n u) takes the rest of n u, so one uniform number serves both choices.
   // With every lobe flat the mixture is uniform and u maps as in equiangular sampling.
   Real sample(Real u) const {
@@ -45,7 +56,9 @@ class CauchyMixtureAngle {
 
  private:
   explicit CauchyMixtureAngle(const PhaseProduct<Real>& target)
-      : fit_(target), width_(target.width()), components_(target.point_kind() == LobeKind::None ? 1 : 2) {}
+      : CauchyMixtureAngle(CauchyLobes<Real>(target), target.width(), target.point_kind() == LobeKind::None ? 1 : 2) {}
+  CauchyMixtureAngle(const CauchyLobes<Real>& fit, Real width, int components)
+      : fit_(fit), width_(width), components_(components) {}
 
   // The mean over the components of f(lobe_k) / mass_k, for f a lobe's density or primitive
   // at one offset; a lobe the fit left out (constant over the interval) is the uniform

@@ -19,8 +19,19 @@ class CauchySumAngle {
  public:
   using Real = R;
   CauchySumAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
-      : fit_(PhaseProduct<Real>(q, dom)), width_(dom.width()) {
+      : CauchySumAngle(CauchyLobes<Real>(PhaseProduct<Real>(q, dom)), dom.width()) {}
+  CauchySumAngle(const CauchyLobes<Real>& fit, Real width) : fit_(fit), width_(width) {
     for (int k = 0; k < fit_.count; ++k) mass_ += fit_.lobe[k].mass();
+  }
+
+  // A batch's fits in vector lanes (CauchyLobesLanes), each then sampled at u[i] one lane
+  // at a time: out[i] is sample_pdf(u[i]) of lane i's query, to rounding.
+  template <int kSize>
+  using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize>;
+  template <int kSize>
+  static void SampleLanes(const TargetLanes<kSize>& target, const Real* u, int lanes, SegmentSample<Real>* out) {
+    const CauchyLobesLanes<Real, kSize> fits(target, lanes);
+    for (int i = 0; i < lanes; ++i) out[i] = CauchySumAngle(fits.lobes(i), fits.width[i]).sample_pdf(u[i]);
   }
 
   Real sample(Real u) const {

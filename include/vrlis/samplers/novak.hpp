@@ -9,12 +9,23 @@
 #include <array>
 #include <limits>
 #include <string_view>
+#include <type_traits>
 
 #include "../angle/full_product.hpp"
 #include "../angle/segment_sampler.hpp"
 #include "../core/piecewise_linear.hpp"
 
 namespace vrlis {
+
+namespace detail {
+// Target::Lanes<kSize> as `type`, absent (not an error) where Target has no form in lanes.
+template <typename Target, int kSize, typename = void>
+struct LanesOf {};
+template <typename Target, int kSize>
+struct LanesOf<Target, kSize, std::void_t<typename Target::template Lanes<kSize>>> {
+  using type = typename Target::template Lanes<kSize>;
+};
+}  // namespace detail
 
 // A piecewise-linear fit of a target over the angle domain. Target is constructed from
 // (query, domain) and offers evaluate(deltas, values), splits(points) (the offsets where a
@@ -47,8 +58,10 @@ class PiecewiseLinearAngle {
   // out[i] what sample_pdf(u[i]) returns, to rounding. One loop over the lanes per step
   // (the splits, each node's offset and value, the normalisation, the areas, the interval
   // search), then the closed-form inversion one lane at a time (in double for float).
-  template <int kSize, typename TargetLanes>
-  static void SampleLanes(const TargetLanes& target, const Real* u, int lanes, SegmentSample<Real>* out) {
+  template <int kSize>
+  using TargetLanes = typename detail::LanesOf<Target, kSize>::type;  // none if Target has no Lanes
+  template <int kSize>
+  static void SampleLanes(const TargetLanes<kSize>& target, const Real* u, int lanes, SegmentSample<Real>* out) {
     constexpr int kLast = kNodes - 1;
     constexpr Real kInf = std::numeric_limits<Real>::infinity();
     // Each lane's sides (as Fit): side k in [0, 2] runs from node last_k-1 (offset end_k-1) to
