@@ -11,6 +11,8 @@
 //   = sigma_t h sin(delta/2) / (cos(x/2) cos(x_a/2)),
 // which reuses the cosine the segment lobe needs anyway and never cancels.
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "phase_product.hpp"
@@ -70,6 +72,9 @@ class FullProductTarget {
   // transmittance peaks inside the interval. For g < 0 the segment lobe grows towards the
   // far pole while the transmittance falls, so their product peaks inside; a fit that
   // misses that peak puts a tiny density under most of the integral (docs/maths.md#full-product).
+  template <int kSize>
+  struct Lanes;
+
   int splits(std::array<Real, 2>& out) const {
     int n = phase_.splits(out);
     Real peak = SegmentTransmittancePeak();
@@ -118,6 +123,88 @@ class FullProductTarget {
   Real sigma_h_;
   Real depth_scale_;  // sigma_t h / cos(x_a / 2)
   Real width_;
+};
+
+// The targets of a batch's camera steps in lanes, as PhaseProduct::Lanes (which holds the
+// phase product's part): what the constructor, evaluate() and splits() compute, lane by lane
+// in the same operations (square roots by Newton steps: within 3 ulp). The peak's Newton
+// solve runs its eight steps in every lane, each lane keeping its iterate once it converged.
+template <typename Real>
+template <int kSize>
+struct FullProductTarget<Real>::Lanes {
+  typename PhaseProduct<Real>::template Lanes<kSize> phase;
+  Real pole_sin[kSize], pole_cos[kSize], sigma_h[kSize], depth_scale[kSize];
+  const Real* width = phase.width;
+
+  template <Accuracy kAccuracy>
+  void build(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y, const Real* axis_z,
+             Vec3<Real> dir, Real segment_g, Real sigma_t, int lanes) {
+    phase.template build<kAccuracy>(frames, axis_x, axis_y, axis_z, dir, segment_g, sigma_t, lanes);
+    for (int i = 0; i < lanes; ++i) {
+      const SinCosPair<Real> pole = SinCosLanes(phase.lower[i] / 2);
+      pole_sin[i] = pole.sin, pole_cos[i] = pole.cos;
+      sigma_h[i] = sigma_t * frames.h[i];
+      depth_scale[i] = sigma_h[i] / pole.cos;
+    }
+  }
+
+  template <Accuracy kAccuracy>
+  void evaluate(int lanes, const Real* delta, Real* out) const {
+    phase.template evaluate<kAccuracy>(lanes, delta, out);
+    for (int i = 0; i < lanes; ++i) {
+      const Real transmittance = detail::SegmentTransmittance<kAccuracy>(SinCosLanes<kAccuracy>(delta[i] / 2),
+                                                                         {pole_sin[i], pole_cos[i]}, depth_scale[i]);
+      out[i] = SelectLanes(depth_scale[i] > 0, out[i] * transmittance, out[i]);
+    }
+  }
+
+  void splits(int lanes, Real (*split)[kSize], int* count) const {
+    phase.splits(lanes, split, count);
+    Real peak[kSize];
+    SegmentTransmittancePeaks(lanes, peak);
+    for (int i = 0; i < lanes; ++i) {
+      const Real s0 = split[0][i], p = peak[i];
+      const bool one = count[i] == 1;
+      const bool add = (p > 0) & (p < width[i]) & !(one & (std::abs(p - s0) <= width[i] * Real(1e-3)));
+      split[0][i] = SelectLanes(add & (!one | (p < s0)), p, s0);
+      split[1][i] = SelectLanes(one & (p < s0), s0, p);
+      count[i] += static_cast<int>(add);
+    }
+  }
+
+ private:
+  // SegmentTransmittancePeak() of every lane (-1: none).
+  void SegmentTransmittancePeaks(int lanes, Real* peak) const {
+    const Real g = phase.g;
+    for (int i = 0; i < lanes; ++i) peak[i] = -1;
+    if (!(g < 0)) return;
+    const Real a = -g, k = 12 * a, base = Sqr(1 + g);
+    // State per lane, as wide as the floats (a loop mixing bytes with them stays scalar):
+    // 1 while iterating, 0 once converged, -1 when it has no peak.
+    Real c[kSize];
+    std::int32_t state[kSize];
+    for (int i = 0; i < lanes; ++i) {
+      c[i] = CbrtLanes(sigma_h[i] * base / k);
+      state[i] = (sigma_h[i] > 0) & (c[i] < pole_cos[i]) ? 1 : -1;
+    }
+    for (int step = 0; step < 8; ++step)
+      for (int i = 0; i < lanes; ++i) {
+        const Real x = c[i], s = SqrtLanes(1 - x * x);
+        const Real f = k * s * x * x * x - sigma_h[i] * (base + 4 * a * x * x);
+        const Real s_df = k * x * x * (3 - 4 * x * x) - 8 * a * sigma_h[i] * x * s;
+        const bool active = (state[i] == 1) & (x < 1);
+        const Real next = x - s * f / s_df;
+        const bool rising = s_df > 0;
+        c[i] = SelectLanes(active & rising, next, x);
+        const bool converged = std::abs(s * f / s_df) <= Real(1e-2) * next;
+        const std::int32_t stepped = std::int32_t(rising) * (2 - std::int32_t(converged)) - 1;  // 0, 1 or -1
+        state[i] += std::int32_t(active) * (stepped - state[i]);
+      }
+    for (int i = 0; i < lanes; ++i) {
+      const bool found = (state[i] == 0) & (c[i] > 0) & (c[i] < 1);
+      peak[i] = SelectLanes(found, 2 * Atan2Lanes(SqrtLanes(1 - c[i] * c[i]), c[i]) + phase.lower[i], Real(-1));
+    }
+  }
 };
 
 }  // namespace vrlis

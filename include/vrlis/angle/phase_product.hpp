@@ -242,8 +242,8 @@ class PhaseProduct {
   Real r_ = 0, one_minus_r_ = 1, theta_e_ = 0;
 };
 
-// The targets of a batch's camera steps, one per lane, for a piecewise-linear fit of all of
-// them at once (PiecewiseLinearAngle::SampleLanes): the medium-to-medium gathers' queries, a
+// The targets of a batch's camera steps, one per lane, for fits of all of them at once
+// (PiecewiseLinearAngle::SampleLanes, CauchyLobesLanes): the medium-to-medium gathers' queries, a
 // Henyey-Greenstein point lobe about each VRL's direction with the segment's g
 // (MediumToMediumQuery). Each lane holds what the constructor and evaluate() compute for its
 // query, in the same operations (square roots by Newton steps in lanes: within 3 ulp).
@@ -257,10 +257,10 @@ struct PhaseProduct<Real>::Lanes {
   Real g = 0, scale = 0;
 
   // Lanes [0, lanes) from the queries' angle frames and the lobes' axes (one array per
-  // coordinate); dir is the camera segment's.
+  // coordinate); dir is the camera segment's (sigma_t: unused, FullProductTarget's needs it).
   template <Accuracy kAccuracy>
   void build(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y, const Real* axis_z,
-             Vec3<Real> dir, Real segment_g, int lanes) {
+             Vec3<Real> dir, Real segment_g, Real /*sigma_t*/, int lanes) {
     g = segment_g;
     scale = (1 - g) * (1 + g) / (4 * kPi<Real>);
     for (int i = 0; i < lanes; ++i) {

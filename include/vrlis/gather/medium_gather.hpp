@@ -165,7 +165,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     if constexpr (FitsInLanes<CameraSampler>::value) {
       using Fit = typename FitsInLanes<CameraSampler>::Fit;
       typename Fit::template TargetLanes<kSize> targets;
-      targets.template build<Accuracy::Fit>(frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g, lanes);
+      targets.template build<Accuracy::Fit>(frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g, medium.sigma_t, lanes);
       Real u[kSize];
       for (int i = 0; i < lanes; ++i) u[i] = u_camera[first + (i < n ? i : 0)];
       SegmentSample<Real> d[kSize];
