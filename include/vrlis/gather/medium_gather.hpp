@@ -116,9 +116,11 @@ struct FitsInLanes<SegmentSampler<D>, std::void_t<typename D::template TargetLan
 // in vector lanes (SampleVrlPoints: the same numbers as one at a time, to rounding); any
 // other step one is fitted once for a run of equal VRLs (a split gather's samples), which is
 // the same density and the same numbers. The camera steps run in phases, each a loop: their
-// angle domains (all against the one camera segment), their fits and offsets (each sampler's
-// own code), then their points and the integrands. The first and the last run in vector
-// lanes too, to rounding the one-at-a-time numbers (lane_math.hpp). One gather is a long
+// angle domains (all against the one camera segment), their fits and offsets, then their
+// points and the integrands. The first and the last run in vector lanes too, to rounding the
+// one-at-a-time numbers (lane_math.hpp); so do the fits of every sampler whose distribution
+// has a form in lanes (FitsInLanes: Novák's, FullProduct's and the Cauchy fits; their
+// closed-form inversions stay one gather at a time), the others' one gather at a time. One gather is a long
 // chain of dependent operations and one vector of lanes is still one chain; the gathers of
 // a phase are independent, and several vectors of them let the processor overlap their
 // chains (lanes over 8 gathers at a time gained 10%, over 32 a factor 2 for equiangular
