@@ -235,6 +235,9 @@ for scene in scenes:
     print(f"| {scene} | " + " | ".join(f"{st[m]:.0f}" for m in scene_methods) +
           " | " + " | ".join(f"{st[c] / st[base_name]:.2f}" for c in thesis()) + " |")
 parts = {b["name"].rsplit("_", 1)[0]: b["cpu_time"] for b in load(f"{out}/runs/parts.json") if median(b)}
+# ns per gather of a batched benchmark, from its own count of gathers per iteration
+per_gather = {b["name"].rsplit("_", 1)[0]: 1e9 / b["items_per_second"] for b in load(f"{out}/runs/parts.json")
+              if median(b) and "items_per_second" in b}
 print(f"\nCost of one gather, ns (this tree; medians of {reps} repetitions; Gather = everything but the occlusion ray, "
       "one VRL at a time; batched gather: one gather of SampleMediumGathers, 32 VRLs (kGatherChunk) against one camera segment, "
       "the renderer's call; batched surface gather: one of SampleSurfaceGathers, eight VRLs seen from one surface "
@@ -245,8 +248,8 @@ for c, m in zip(cams, samplers):
     for g in (-0.9, 0.5, 0.9):
         whole, fit, cam = parts[f"Gather/{c}/g:{g:.2f}"], parts[f"Fit/{c}/g:{g:.2f}"], parts[f"Camera/{c}/g:{g:.2f}"]
         v, s1, f = parts["GatherPart/validate"], parts["GatherPart/step-one"], parts["GatherPart/integrand"]
-        batched = parts[f"GatherBatch/{c}/g:{g:.2f}"] / 8
-        surface = parts[f"SurfaceGatherBatch/{c}/g:{g:.2f}"] / 8
+        batched = per_gather[f"GatherBatch/{c}/g:{g:.2f}"]
+        surface = per_gather[f"SurfaceGatherBatch/{c}/g:{g:.2f}"]
         print(f"| {m} | {g:g} | {whole:.0f} | {v:.0f} | {s1:.0f} | {fit:.0f} | {cam - fit:.0f} | {f:.0f} | {whole - v - s1 - cam - f:.0f} | {batched:.0f} | {surface:.0f} |")
 # This table is one run of this tree, not interleaved with the baseline: a slow phase of a
 # shared machine inflates all of it. The same benchmark in both runs shows by how much.
