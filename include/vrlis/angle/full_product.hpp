@@ -125,23 +125,24 @@ class FullProductTarget {
   Real width_;
 };
 
-// The targets of a batch's camera steps in lanes, as PhaseProduct::Lanes (which holds the
-// phase product's part): what the constructor, evaluate() and splits() compute, lane by lane
-// in the same operations (square roots by Newton steps: within 3 ulp). The peak's Newton
-// solve runs its eight steps in every lane, each lane keeping its iterate once it converged.
+// The targets of a batch's camera steps in lanes: the phase product's (PhaseProduct::Lanes,
+// the base) times the transmittance, what the constructor, evaluate() and splits() compute,
+// lane by lane in the same operations (square roots by Newton steps: within 3 ulp). The
+// peak's Newton solve runs its eight steps in every lane, each lane keeping its iterate once
+// it converged.
 template <typename Real>
 template <int kSize>
-struct FullProductTarget<Real>::Lanes {
-  typename PhaseProduct<Real>::template Lanes<kSize> phase;
+struct FullProductTarget<Real>::Lanes : PhaseProduct<Real>::template Lanes<kSize> {
+  using Phase = typename PhaseProduct<Real>::template Lanes<kSize>;
+  using Phase::g, Phase::lower, Phase::width;
   Real pole_sin[kSize], pole_cos[kSize], sigma_h[kSize], depth_scale[kSize];
-  const Real* width = phase.width;
 
   template <Accuracy kAccuracy>
   void build(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y, const Real* axis_z,
              Vec3<Real> dir, Real segment_g, Real sigma_t, int lanes) {
-    phase.template build<kAccuracy>(frames, axis_x, axis_y, axis_z, dir, segment_g, sigma_t, lanes);
+    Phase::template build<kAccuracy>(frames, axis_x, axis_y, axis_z, dir, segment_g, sigma_t, lanes);
     for (int i = 0; i < lanes; ++i) {
-      const SinCosPair<Real> pole = SinCosLanes(phase.lower[i] / 2);
+      const SinCosPair<Real> pole = SinCosLanes(lower[i] / 2);
       pole_sin[i] = pole.sin, pole_cos[i] = pole.cos;
       sigma_h[i] = sigma_t * frames.h[i];
       depth_scale[i] = sigma_h[i] / pole.cos;
@@ -150,7 +151,7 @@ struct FullProductTarget<Real>::Lanes {
 
   template <Accuracy kAccuracy>
   void evaluate(int lanes, const Real* delta, Real* out) const {
-    phase.template evaluate<kAccuracy>(lanes, delta, out);
+    Phase::template evaluate<kAccuracy>(lanes, delta, out);
     for (int i = 0; i < lanes; ++i) {
       const Real transmittance = detail::SegmentTransmittance<kAccuracy>(SinCosLanes<kAccuracy>(delta[i] / 2),
                                                                          {pole_sin[i], pole_cos[i]}, depth_scale[i]);
@@ -159,7 +160,7 @@ struct FullProductTarget<Real>::Lanes {
   }
 
   void splits(int lanes, Real (*split)[kSize], int* count) const {
-    phase.splits(lanes, split, count);
+    Phase::splits(lanes, split, count);
     Real peak[kSize];
     SegmentTransmittancePeaks(lanes, peak);
     for (int i = 0; i < lanes; ++i) {
@@ -175,7 +176,6 @@ struct FullProductTarget<Real>::Lanes {
  private:
   // SegmentTransmittancePeak() of every lane (-1: none).
   void SegmentTransmittancePeaks(int lanes, Real* peak) const {
-    const Real g = phase.g;
     for (int i = 0; i < lanes; ++i) peak[i] = -1;
     if (!(g < 0)) return;
     const Real a = -g, k = 12 * a, base = Sqr(1 + g);
@@ -185,7 +185,7 @@ struct FullProductTarget<Real>::Lanes {
     std::int32_t state[kSize];
     for (int i = 0; i < lanes; ++i) {
       c[i] = CbrtLanes(sigma_h[i] * base / k);
-      state[i] = (sigma_h[i] > 0) & (c[i] < pole_cos[i]) ? 1 : -1;
+      state[i] = ((sigma_h[i] > 0) & (c[i] < pole_cos[i])) ? 1 : -1;
     }
     for (int step = 0; step < 8; ++step)
       for (int i = 0; i < lanes; ++i) {
@@ -202,7 +202,7 @@ struct FullProductTarget<Real>::Lanes {
       }
     for (int i = 0; i < lanes; ++i) {
       const bool found = (state[i] == 0) & (c[i] > 0) & (c[i] < 1);
-      peak[i] = SelectLanes(found, 2 * Atan2Lanes(SqrtLanes(1 - c[i] * c[i]), c[i]) + phase.lower[i], Real(-1));
+      peak[i] = SelectLanes(found, 2 * Atan2Lanes(SqrtLanes(1 - c[i] * c[i]), c[i]) + lower[i], Real(-1));
     }
   }
 };
