@@ -2,8 +2,12 @@
 // The batched gathers of every registered sampler, compiled once for the whole suite
 // (gather_instances.cpp) instead of in every test file that reaches them: each file calling
 // GatherMediumVrls compiles all of them twice (core/dispatch.hpp), about a minute apiece.
-// A sampler missing here still works; its gathers are just compiled where they are used.
+// A sampler missing here would still work, its gathers compiled where they are used; the
+// count below makes a newly registered one a compile error until it is listed.
 #include <vrlis/vrlis.hpp>
+
+static_assert(vrlis::SegmentSamplers::kCount == 6 && vrlis::VrlSamplers::kCount == 2,
+              "list every registered sampler in VRLIS_TEST_GATHERS (below)");
 
 #define VRLIS_TEST_MEDIUM_GATHERS(kind, StepOne, Camera, Real)                                                     \
   kind template void vrlis::SampleMediumGathers<vrlis::StepOne::Sampler<Real>, vrlis::Camera::Sampler<Real>, Real>( \

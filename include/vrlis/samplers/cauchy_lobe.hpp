@@ -65,6 +65,43 @@ class TruncatedCauchy {
   Real location_ = 0, scale_ = 1, inv_scale_ = 1, width_ = 0, mass_ = 0;
 };
 
+namespace detail {
+// One lobe's Cauchy under the thesis's fit (below): its location, scale, 1 / scale, truncated
+// mass, and whether it is kept. kLanes: branch-free, every case computed, for a loop over a
+// batch's queries; otherwise the mass only for a kept lobe.
+template <typename Real>
+struct CauchyLobeFit {
+  Real location = 0, scale = 1, inv_scale = 1, mass = 0;
+  bool kept = false;
+};
+template <bool kLanes, typename Real>
+[[gnu::always_inline]] inline CauchyLobeFit<Real> FitCauchyLobe(bool flat, Real peak, PhaseFraction<Real> peak_value,
+                                                                Real width) {
+  // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
+  // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  const Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;
+  const Real scale = peak_value.den / pi_num, inv_scale = pi_num / peak_value.den;
+  // Constant over the interval to the last digit, a flat lobe: so wide that it is over the
+  // whole extent, or so far from the interval that its relative change there (at most
+  // 2 width / distance) is below epsilon. The latter is no mere shortcut: there the
+  // primitives are ~ width scale / distance^2 and underflow to subnormals (float widths of
+  // ~1e-36 rad), whose few digits broke the round trip.
+  const Real distance = Pick<kLanes>(peak < 0, -peak, Pick<kLanes>(peak > width, peak - width, Real(0)));
+  CauchyLobeFit<Real> out;
+  out.kept = !flat & (extent >= scale * std::sqrt(eps)) & !(2 * width < eps * distance);
+  if constexpr (!kLanes)
+    if (!out.kept) return out;
+  const Real resolvable = 64 * eps * extent;
+  const bool widened = scale < resolvable;
+  out.location = peak;
+  out.scale = Pick<kLanes>(widened, resolvable, scale);
+  out.inv_scale = Pick<kLanes>(widened, 1 / resolvable, inv_scale);
+  out.mass = TruncatedCauchy<Real>(out.location, out.scale, out.inv_scale, width, 0).primitive(width);
+  return out;
+}
+}  // namespace detail
+
 // The thesis's fit (docs/maths.md#cauchy-fit): a Cauchy located at the lobe's peak whose peak value 1 / (pi gamma)
 // equals the lobe's peak value. Lobes constant in theta only scale the product and are
 // left out (so that g = 0 reduces to equiangular sampling exactly).
@@ -81,21 +118,8 @@ struct CauchyLobes {
 
  private:
   void Add(Real peak, PhaseFraction<Real> peak_value, Real width) {
-    // Offsets near the peak are resolved to an ulp of (width + |peak|); a narrower Cauchy
-    // (the thesis's fit for |g| > ~0.995 in float) cannot be sampled and inverted consistently.
-    Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;
-    Real scale = peak_value.den / pi_num, inv_scale = pi_num / peak_value.den;
-    // Constant over the interval to the last digit, a flat lobe: so wide that it is over the
-    // whole extent, or so far from the interval that its relative change there (at most
-    // 2 width / distance) is below epsilon. The latter is no mere shortcut: there the
-    // primitives are ~ width scale / distance^2 and underflow to subnormals (float widths of
-    // ~1e-36 rad), whose few digits broke the round trip.
-    const Real eps = std::numeric_limits<Real>::epsilon();
-    Real distance = peak < 0 ? -peak : std::max(peak - width, Real(0));
-    if (!(extent >= scale * std::sqrt(eps)) || 2 * width < eps * distance) return;
-    Real resolvable = 64 * eps * extent;
-    bool widened = scale < resolvable;
-    lobe[count++] = TruncatedCauchy<Real>(peak, widened ? resolvable : scale, widened ? 1 / resolvable : inv_scale, width);
+    const detail::CauchyLobeFit<Real> f = detail::FitCauchyLobe<false>(false, peak, peak_value, width);
+    if (f.kept) lobe[count++] = TruncatedCauchy<Real>(f.location, f.scale, f.inv_scale, width, f.mass);
   }
 };
 
@@ -104,57 +128,36 @@ struct CauchyLobes {
 // (square roots by Newton steps: within 3 ulp of CauchyLobes). lobes(i) is lane i's fit.
 template <typename Real, int kSize>
 struct CauchyLobesLanes {
-  Real location[2][kSize], scale[2][kSize], inv_scale[2][kSize], mass[2][kSize], width[kSize];
+  Real location[2][kSize], scale[2][kSize], inv_scale[2][kSize], mass[2][kSize];
   std::int32_t count[kSize];
 
   CauchyLobesLanes(const typename PhaseProduct<Real>::template Lanes<kSize>& target, int lanes) {
-    const Real g = target.g, ag = std::abs(g), sqrt_eps = std::sqrt(std::numeric_limits<Real>::epsilon());
+    const Real g = target.g, ag = std::abs(g);
     const PhaseFraction<Real> segment_value{HenyeyGreensteinPeak(g), 1};
     for (int i = 0; i < lanes; ++i) {
       const Real w = target.width[i];
-      const Lobe segment = Fit(g == 0, SelectLanes(g > 0, target.lower[i], target.upper[i]), segment_value, w, sqrt_eps);
+      const auto segment =
+          detail::FitCauchyLobe<true>(g == 0, SelectLanes(g > 0, target.lower[i], target.upper[i]), segment_value, w);
       const Real d = HenyeyGreensteinBase<true>(ag, target.one_minus_r[i], 1 + target.r[i]);
-      const Lobe point = Fit(target.point_lobe_flat(i), target.point_peak(i),
-                             {(1 - ag) * (1 + ag), 4 * kPi<Real> * d * SqrtLanes(d)}, w, sqrt_eps);
+      const auto point = detail::FitCauchyLobe<true>(target.point_lobe_flat(i), target.point_peak(i),
+                                                     {(1 - ag) * (1 + ag), 4 * kPi<Real> * d * SqrtLanes(d)}, w);
       // In CauchyLobes' order: the segment's first, where it is kept.
       location[0][i] = SelectLanes(segment.kept, segment.location, point.location);
       scale[0][i] = SelectLanes(segment.kept, segment.scale, point.scale);
       inv_scale[0][i] = SelectLanes(segment.kept, segment.inv_scale, point.inv_scale);
       mass[0][i] = SelectLanes(segment.kept, segment.mass, point.mass);
       location[1][i] = point.location, scale[1][i] = point.scale, inv_scale[1][i] = point.inv_scale;
-      mass[1][i] = point.mass, width[i] = w;
+      mass[1][i] = point.mass;
       count[i] = std::int32_t(segment.kept) + std::int32_t(point.kept);
     }
   }
 
-  CauchyLobes<Real> lobes(int i) const {
+  // Lane i's fit over [0, width].
+  CauchyLobes<Real> lobes(int i, Real width) const {
     CauchyLobes<Real> out;
     out.count = count[i];
     for (int k = 0; k < count[i]; ++k)
-      out.lobe[k] = TruncatedCauchy<Real>(location[k][i], scale[k][i], inv_scale[k][i], width[i], mass[k][i]);
-    return out;
-  }
-
- private:
-  struct Lobe {
-    Real location, scale, inv_scale, mass;
-    bool kept;
-  };
-  // CauchyLobes::Add for one lane, branch-free.
-  [[gnu::always_inline]] static Lobe Fit(bool flat, Real peak, PhaseFraction<Real> peak_value, Real width,
-                                         Real sqrt_eps) {
-    const Real eps = std::numeric_limits<Real>::epsilon();
-    const Real extent = width + std::abs(peak), pi_num = kPi<Real> * peak_value.num;
-    const Real scale = peak_value.den / pi_num, inv_scale = pi_num / peak_value.den;
-    const Real distance = SelectLanes(peak < 0, -peak, SelectLanes(peak > width, peak - width, Real(0)));
-    const Real resolvable = 64 * eps * extent;
-    const bool widened = scale < resolvable;
-    Lobe out;
-    out.location = peak;
-    out.scale = SelectLanes(widened, resolvable, scale);
-    out.inv_scale = SelectLanes(widened, 1 / resolvable, inv_scale);
-    out.mass = Atan2Lanes(width, out.scale + peak * ((peak - width) * out.inv_scale));  // primitive(width)
-    out.kept = !flat & (extent >= scale * sqrt_eps) & !(2 * width < eps * distance);
+      out.lobe[k] = TruncatedCauchy<Real>(location[k][i], scale[k][i], inv_scale[k][i], width, mass[k][i]);
     return out;
   }
 };

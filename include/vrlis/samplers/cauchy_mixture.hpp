@@ -30,7 +30,7 @@ class CauchyMixtureAngle {
   template <int kSize>
   static void SampleLanes(const TargetLanes<kSize>& target, const Real* u, int lanes, SegmentSample<Real>* out) {
     const CauchyLobesLanes<Real, kSize> fits(target, lanes);
-    for (int i = 0; i < lanes; ++i) out[i] = CauchyMixtureAngle(fits.lobes(i), fits.width[i], 2).sample_pdf(u[i]);
+    for (int i = 0; i < lanes; ++i) out[i] = CauchyMixtureAngle(fits.lobes(i, target.width[i]), target.width[i], 2).sample_pdf(u[i]);
   }
 
   // Component k = floor(n u) takes the rest of n u, so one uniform number serves both choices.

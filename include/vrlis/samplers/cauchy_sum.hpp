@@ -31,7 +31,7 @@ class CauchySumAngle {
   template <int kSize>
   static void SampleLanes(const TargetLanes<kSize>& target, const Real* u, int lanes, SegmentSample<Real>* out) {
     const CauchyLobesLanes<Real, kSize> fits(target, lanes);
-    for (int i = 0; i < lanes; ++i) out[i] = CauchySumAngle(fits.lobes(i), fits.width[i]).sample_pdf(u[i]);
+    for (int i = 0; i < lanes; ++i) out[i] = CauchySumAngle(fits.lobes(i, target.width[i]), target.width[i]).sample_pdf(u[i]);
   }
 
   Real sample(Real u) const {
