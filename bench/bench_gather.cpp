@@ -7,6 +7,8 @@
 //                           VRLs (the camera of configuration 32k, the VRLs of 32k .. 32k + 31,
 //                           the renderer's batches), time per iteration, that is per batch
 //                           (divide by 32 for one gather)
+//   GatherBatchMarginal/<method>/g:<g>  the same with VrlMarginal as step one (its fits in
+//                           lanes over the batch's VRLs)
 //   GatherBatchDouble/<method>/g:<g>  the same in double (the same configurations, converted):
 //                           the price of double precision (docs/porting.md#precision)
 //   SurfaceGatherBatch/<method>/g:<g>  SampleSurfaceGathers: the VRLs of 8k .. 8k + 7 seen from
@@ -63,10 +65,10 @@ BatchInputs<Real> BatchInputsOf(const Pools& pools) {
 }
 
 template <typename Real>
-void GatherBatch(benchmark::State& state, SegmentChoice method, double g) {
+void GatherBatch(benchmark::State& state, GatherSamplers method, double g) {
   const BatchInputs<Real> in = BatchInputsOf<Real>(PoolsFor(g));
   const size_t batches = in.vrls.size() / kGatherChunk;
-  WithGatherSamplers<Real>(GatherSamplers{method, VrlSamplers::Of<VrlPointEntry>()}, [&](auto step_one, auto step_two) {
+  WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
     GatherSample<Real> out[kGatherChunk];
     size_t b = 0;
     for (auto _ : state) {
@@ -138,12 +140,17 @@ void RegisterGather() {
                                    [method, g](benchmark::State& s) { Gather(s, method, g); });
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
-      benchmark::RegisterBenchmark(BenchName("GatherBatch", std::string(method.name()).c_str(), g).c_str(),
-                                   [method, g](benchmark::State& s) { GatherBatch<float>(s, method, g); });
+      for (VrlChoice one : kVrlSamplers) {
+        const bool marginal = one == VrlSamplers::Of<VrlMarginalEntry>();
+        benchmark::RegisterBenchmark(
+            BenchName(marginal ? "GatherBatchMarginal" : "GatherBatch", std::string(method.name()).c_str(), g).c_str(),
+            [method, one, g](benchmark::State& s) { GatherBatch<float>(s, {method, one}, g); });
+      }
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
-      benchmark::RegisterBenchmark(BenchName("GatherBatchDouble", std::string(method.name()).c_str(), g).c_str(),
-                                   [method, g](benchmark::State& s) { GatherBatch<double>(s, method, g); });
+      benchmark::RegisterBenchmark(
+          BenchName("GatherBatchDouble", std::string(method.name()).c_str(), g).c_str(),
+          [method, g](benchmark::State& s) { GatherBatch<double>(s, {method, VrlSamplers::Of<VrlPointEntry>()}, g); });
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       benchmark::RegisterBenchmark(BenchName("SurfaceGatherBatch", std::string(method.name()).c_str(), g).c_str(),

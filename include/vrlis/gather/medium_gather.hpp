@@ -110,23 +110,23 @@ struct FitsInLanes<SegmentSampler<D>, std::void_t<typename D::template TargetLan
 };
 }  // namespace detail
 
-// Many VRLs against one camera segment, a renderer's inner loop: out[i] is
-// SampleMediumGather for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i]
-// (each query valid), in chunks of up to kGatherChunk gathers. Step one with VrlPoint runs
-// in vector lanes (SampleVrlPoints: the same numbers as one at a time, to rounding); any
-// other step one is fitted once for a run of equal VRLs (a split gather's samples), which is
-// the same density and the same numbers. The camera steps run in phases, each a loop: their
-// angle domains (all against the one camera segment), their fits and offsets, then their
+// Many VRLs against one camera segment, a renderer's inner loop: out[i] is SampleMediumGather
+// for the query {camera, vrls[i], medium} with u_vrl[i] and u_camera[i] (each query valid), in
+// chunks of up to kGatherChunk gathers. Step one is the same numbers as one at a time, to
+// rounding: VrlPoint's runs in vector lanes (SampleVrlPoints), any other by the sampler's
+// SampleLanes (VrlMarginal: one fit, its nodes in lanes, for each run of equal VRLs, a split
+// gather's samples; the VRL points in lanes). The camera steps run in phases, each a loop:
+// their angle domains (all against the one camera segment), their fits and offsets, then their
 // points and the integrands. The first and the last run in vector lanes too, to rounding the
 // one-at-a-time numbers (lane_math.hpp); so do the fits of every sampler whose distribution
 // has a form in lanes (FitsInLanes: Novák's, FullProduct's and the Cauchy fits; their
-// closed-form inversions stay one gather at a time), the others' one gather at a time. One gather is a long
-// chain of dependent operations and one vector of lanes is still one chain; the gathers of
-// a phase are independent, and several vectors of them let the processor overlap their
-// chains (lanes over 8 gathers at a time gained 10%, over 32 a factor 2 for equiangular
-// sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera sampler and
-// measure_mixture, each sample also carries GatherSample::over_mixture (a CauchyMixture fit
-// per sample).
+// closed-form inversions stay one gather at a time), the others' one gather at a time. One
+// gather is a long chain of dependent operations and one vector of lanes is still one chain;
+// the gathers of a phase are independent, and several vectors of them let the processor
+// overlap their chains (lanes over 8 gathers at a time gained 10%, over 32 a factor 2 for
+// equiangular sampling: GatherBatch/ in bench/bench_gather.cpp). With `auto` as the camera
+// sampler and measure_mixture, each sample also carries GatherSample::over_mixture (a
+// CauchyMixture fit per sample).
 namespace detail {
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathersAsBuilt(const RaySegment<Real>& camera, const Medium<Real>& medium,
@@ -134,8 +134,6 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
                                                  const Real* u_camera, GatherSample<Real>* out,
                                                  bool measure_mixture) {
   constexpr int kSize = kGatherChunk;
-  std::optional<StepOneSampler> step_one;  // fitted for vrls[fitted]
-  int fitted = -1;
   for (int first = 0; first < count; first += kSize) {
     const int n = std::min(kSize, count - first);
     const int lanes = WholeLanes(n);
@@ -143,11 +141,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
       SampleVrlPoints<kSize>(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
     } else {
-      for (int k = first; k < first + n; ++k) {
-        if (fitted < 0 || !SameVrl(vrls[fitted], vrls[k]))
-          step_one.emplace(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[k], medium}), fitted = k;
-        v[k - first] = step_one->sample_pdf(u_vrl[k]);
-      }
+      StepOneSampler::template SampleLanes<kSize>(ValidQuery{}, camera, medium, vrls + first, n, u_vrl + first, v);
     }
     // The lanes' inputs (the unused lanes repeat the first gather).
     const VrlLanes<Real, kSize> vrl(vrls + first, n);

@@ -103,6 +103,25 @@ class VrlMarginal {
     return fit_.cdf(vp_.invert(v));
   }
 
+  // Step one for count (1 to kSize) VRLs against one camera segment, each a valid gather
+  // query with it (SampleMediumGathers): out[i] is VrlMarginal({camera, vrls[i], medium})
+  // .sample_pdf(u[i]) to rounding. A run of equal VRLs (a split gather's samples) is fitted
+  // once; the VRL points are SampleVrlPoints', in lanes over the gathers.
+  template <int kSize>
+  static void SampleLanes(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
+                          const VrlSegment<Real>* vrls, int count, const Real* u, SegmentSample<Real>* out) {
+    Real xi[kSize], xi_pdf[kSize];
+    for (int first = 0, i = 0; first < count; first = i) {
+      const VrlMarginal fitted(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first], medium});
+      for (; i < count && SameVrl(vrls[first], vrls[i]); ++i) {
+        const SegmentSample<Real> s = fitted.fit_.sample_pdf(u[i]);
+        xi[i] = s.t, xi_pdf[i] = s.pdf;
+      }
+    }
+    SampleVrlPoints<kSize>(ValidQuery{}, camera, vrls, count, xi, out);
+    for (int i = 0; i < count; ++i) out[i].pdf *= xi_pdf[i];
+  }
+
   // The fitted density over xi = VrlPoint.invert(v) (for studies): value(xi) / total.
   Real xi_density(Real xi) const { return fit_.pdf(xi); }
   static constexpr Real node(int j) { return Real(j) / Real(kNodes - 1); }
