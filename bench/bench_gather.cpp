@@ -7,8 +7,8 @@
 //                           VRLs (the camera of configuration 32k, the VRLs of 32k .. 32k + 31,
 //                           the renderer's batches), time per iteration, that is per batch
 //                           (divide by 32 for one gather)
-//   GatherBatchMarginal/<method>/g:<g>  the same with VrlMarginal as step one (its fits in
-//                           lanes over the batch's VRLs)
+//   GatherBatchMarginal/<method>/g:<g>  the same with VrlMarginal as step one
+//                           (VrlMarginal::SampleLanes)
 //   GatherBatchDouble/<method>/g:<g>  the same in double (the same configurations, converted):
 //                           the price of double precision (docs/porting.md#precision)
 //   SurfaceGatherBatch/<method>/g:<g>  SampleSurfaceGathers: the VRLs of 8k .. 8k + 7 seen from
