@@ -6,9 +6,8 @@
 //   GatherBatch/<method>/g:<g>  SampleMediumGathers: one camera segment against kGatherChunk
 //                           VRLs (the camera of configuration 32k, the VRLs of 32k .. 32k + 31,
 //                           the renderer's batches), time per iteration, that is per batch
-//                           (divide by 32 for one gather)
-//   GatherBatchMarginal/<method>/g:<g>  the same with VrlMarginal as step one
-//                           (VrlMarginal::SampleLanes)
+//                           (divide by 32 for one gather); every camera sampler with every
+//                           step one (`novak`, `novak+marginal`, ...: the renderer's names)
 //   GatherBatchDouble/<method>/g:<g>  the same in double (the same configurations, converted):
 //                           the price of double precision (docs/porting.md#precision)
 //   SurfaceGatherBatch/<method>/g:<g>  SampleSurfaceGathers: the VRLs of 8k .. 8k + 7 seen from
@@ -141,10 +140,9 @@ void RegisterGather() {
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
       for (VrlChoice one : kVrlSamplers) {
-        const bool marginal = one == VrlSamplers::Of<VrlMarginalEntry>();
-        benchmark::RegisterBenchmark(
-            BenchName(marginal ? "GatherBatchMarginal" : "GatherBatch", std::string(method.name()).c_str(), g).c_str(),
-            [method, one, g](benchmark::State& s) { GatherBatch<float>(s, {method, one}, g); });
+        const GatherSamplers both{method, one};
+        benchmark::RegisterBenchmark(BenchName("GatherBatch", Name(both), g).c_str(),
+                                     [both, g](benchmark::State& s) { GatherBatch<float>(s, both, g); });
       }
   for (SegmentChoice method : kSegmentSamplers)
     for (double g : kGatherG)
