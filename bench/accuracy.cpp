@@ -7,6 +7,9 @@
 //     point by the sampler, full integrand with transmittance);
 //   - the same with VrlMarginal as step one ("whole_marginal" in the JSON, "wholM" rows;
 //     VrlMarginal needs a finite camera segment, so unbounded ones are left out of it);
+//     with --marginal-turn RAD, VrlMarginal fitted for the camera ray turned by RAD about its
+//     origin and warped by the query's own VrlPoint: what sharing one fit between pixels
+//     RAD apart would cost (docs/maths.md#vrl-marginal-shared);
 // and prints the median and mean per g and sampler (a table, or JSON with --json).
 //
 // Scene mode (--queries FILE): the same on the gather queries a render wrote
@@ -23,7 +26,7 @@
 // mean weight of the step-one-VrlPoint methods' grids (each an unbiased estimate of it; with
 // N = 32 its relative error is far below the table's precision), so no quadrature is needed.
 //
-//   vrlis_accuracy [--pairs N] [--seed S] [--threads T] [--json FILE] [--inner-tol X] [--outer-tol X]
+//   vrlis_accuracy [--pairs N] [--seed S] [--threads T] [--json FILE] [--inner-tol X] [--outer-tol X] [--marginal-turn RAD]
 //   vrlis_accuracy --queries FILE [--seed S] [--threads T] [--json FILE] [--top N] ...
 //   vrlis_accuracy --queries FILE --largest-weights N [--threads T] [--json FILE]
 #include <algorithm>
@@ -58,8 +61,23 @@ struct Result {
   bool converged = true;
 };
 
-Result Evaluate(const Config<double>& c, const QuadratureSettings& s) {
-  Moments cam = CameraStepMoments(c.query, c.xi_vrl, s), whole = WholeMoments(c.query, s);
+// The query's camera ray turned by `angle` about its origin (a neighbouring pixel's ray
+// through a pinhole), towards the azimuth `index` picks about it (a golden-ratio sequence).
+vrlis::MediumGatherQuery<double> Turned(vrlis::MediumGatherQuery<double> q, double angle, std::size_t index) {
+  const vrlis::Vec3<double> d = q.camera.dir;
+  const vrlis::Vec3<double> e1 = Normalize(Cross(d, std::abs(d.x) < 0.9 ? vrlis::Vec3<double>{1, 0, 0}
+                                                                        : vrlis::Vec3<double>{0, 1, 0})),
+                            e2 = Cross(d, e1);
+  const double phi = 2 * vrlis::kPi<double> * std::fmod(0.6180339887498949 * double(index), 1.0);
+  q.camera.dir = Normalize(std::cos(angle) * d + std::sin(angle) * (std::cos(phi) * e1 + std::sin(phi) * e2));
+  return q;
+}
+
+// marginal_turn > 0: VrlMarginal fitted for the camera ray turned by that angle (Turned).
+Result Evaluate(const Config<double>& c, std::size_t index, const QuadratureSettings& s, double marginal_turn) {
+  const vrlis::MediumGatherQuery<double> fitted_for = Turned(c.query, marginal_turn, index);
+  Moments cam = CameraStepMoments(c.query, c.xi_vrl, s),
+          whole = WholeMoments(c.query, s, marginal_turn > 0 ? &fitted_for : nullptr);
   Result r;
   for (int k = 0; k < K; ++k) {
     r.camera[k] = cam.RelativeVariance(k);
@@ -74,11 +92,12 @@ Result Evaluate(const Config<double>& c, const QuadratureSettings& s) {
 }
 
 // Deterministic: each task writes its own slot; the thread count only changes the speed.
-std::vector<Result> EvaluateAll(const std::vector<Config<double>>& configs, const QuadratureSettings& s, int threads) {
+std::vector<Result> EvaluateAll(const std::vector<Config<double>>& configs, const QuadratureSettings& s,
+                                double marginal_turn, int threads) {
   std::vector<Result> results(configs.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
-    for (std::size_t i; (i = next++) < configs.size();) results[i] = Evaluate(configs[i], s);
+    for (std::size_t i; (i = next++) < configs.size();) results[i] = Evaluate(configs[i], i, s, marginal_turn);
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
@@ -244,7 +263,7 @@ Json HardShare(const std::vector<Config<double>>& configs, const std::vector<Res
 [[noreturn]] void Usage(int code) {
   std::fprintf(code ? stderr : stdout,
                "usage: vrlis_accuracy [--pairs N=256] [--seed S] [--threads T=2] [--json FILE]\n"
-               "                      [--inner-tol X=1e-9] [--outer-tol X=1e-7]\n"
+               "                      [--inner-tol X=1e-9] [--outer-tol X=1e-7] [--marginal-turn RAD=0]\n"
                "       vrlis_accuracy --queries FILE [--top N=8] [--seed S] [--threads T] [--json FILE] ...\n"
                "       vrlis_accuracy --queries FILE --largest-weights N [--threads T] [--json FILE]\n");
   std::exit(code);
@@ -262,7 +281,7 @@ bool WriteJson(const std::string& path, const Json& out) {
   return bool(f);
 }
 
-int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSettings& settings,
+int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSettings& settings, double marginal_turn,
                  const std::string& json_path) {
   auto start = std::chrono::steady_clock::now();
   Json out;
@@ -271,11 +290,12 @@ int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSet
   out["pairs"] = pairs;
   out["inner_tol"] = settings.inner_tol;
   out["outer_tol"] = settings.outer_tol;
+  out["marginal_turn"] = marginal_turn;
   out["medium"] = kSyntheticDescription;
   for (auto m : vrlis::kSegmentSamplers) out["samplers"].push_back(vrlis::Name(m));
   out["results"] = Json::array();
   std::vector<std::vector<Result>> results;
-  for (double g : kStudyG) results.push_back(EvaluateAll(MakeConfigs(seed, pairs, g), settings, threads));
+  for (double g : kStudyG) results.push_back(EvaluateAll(MakeConfigs(seed, pairs, g), settings, marginal_turn, threads));
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out["seconds"] = seconds;
   // The geometry is the same for every g, so the hard class is too.
@@ -305,6 +325,7 @@ int RunSynthetic(int pairs, std::uint64_t seed, int threads, const QuadratureSet
 }
 
 int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads, const QuadratureSettings& settings,
+               double marginal_turn,
                const std::string& json_path) {
   std::string error;
   auto records = vrlis::integration::ReadQueryLog(path, &error);
@@ -323,7 +344,7 @@ int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads
     if (c.query.medium.g != g) Fail("'" + path + "' mixes media of different g");
 
   auto start = std::chrono::steady_clock::now();
-  std::vector<Result> rows = EvaluateAll(configs, settings, threads);
+  std::vector<Result> rows = EvaluateAll(configs, settings, marginal_turn, threads);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // The image's weights: (w I)^2, with I the whole estimator's (or the camera step's) integral.
@@ -348,6 +369,7 @@ int RunQueries(const std::string& path, int top, std::uint64_t seed, int threads
   out["seed"] = seed;
   out["inner_tol"] = settings.inner_tol;
   out["outer_tol"] = settings.outer_tol;
+  out["marginal_turn"] = marginal_turn;
   out["g"] = g;
   for (auto m : vrlis::kSegmentSamplers) out["samplers"].push_back(vrlis::Name(m));
   out["seconds"] = seconds;
@@ -469,6 +491,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = kDefaultSeed;
   std::string json_path, queries;
   QuadratureSettings settings;
+  double marginal_turn = 0;
   settings.inner_tol = 1e-9;
   settings.outer_tol = 1e-7;
   auto number = [](const char* text, auto parse) {
@@ -494,11 +517,12 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--largest-weights")) largest_weights = to_int(value());
     else if (!std::strcmp(argv[i], "--inner-tol")) settings.inner_tol = to_double(value());
     else if (!std::strcmp(argv[i], "--outer-tol")) settings.outer_tol = to_double(value());
+    else if (!std::strcmp(argv[i], "--marginal-turn")) marginal_turn = to_double(value());
     else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) Usage(0);
     else Usage(2);
   }
-  if (pairs < 1 || threads < 1 || top < 0 || largest_weights < 0 || (largest_weights > 0 && queries.empty()) || !(settings.inner_tol > 0) || !(settings.outer_tol > 0)) Usage(2);
+  if (pairs < 1 || threads < 1 || top < 0 || largest_weights < 0 || (largest_weights > 0 && queries.empty()) || !(settings.inner_tol > 0) || !(settings.outer_tol > 0) || !(marginal_turn >= 0 && marginal_turn < 1)) Usage(2);
   if (largest_weights > 0) return RunLargestWeights(queries, largest_weights, threads, json_path);
-  return queries.empty() ? RunSynthetic(pairs, seed, threads, settings, json_path)
-                         : RunQueries(queries, top, seed, threads, settings, json_path);
+  return queries.empty() ? RunSynthetic(pairs, seed, threads, settings, marginal_turn, json_path)
+                         : RunQueries(queries, top, seed, threads, settings, marginal_turn, json_path);
 }

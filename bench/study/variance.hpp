@@ -145,10 +145,15 @@ inline Moments CameraStepMoments(const MediumGatherQuery<double>& q, double xi_v
 //   E[(f / (pm p2))^2] = Int dv (1 / pm) Int du f^2 / p2 = Int dxi (1 / (p1 pm)) Int du f^2 / p2,
 // on the same outer variable xi (VrlPoint's), broken at VrlMarginal's nodes (its kinks).
 // VrlMarginal needs a finite camera segment: for an unbounded one second_marginal is NaN.
-inline Moments WholeMoments(const MediumGatherQuery<double>& q, const QuadratureSettings& s = {}) {
+// fitted_for: VrlMarginal's fit over xi made for this query instead (the same VRL seen from a
+// neighbouring camera segment), warped by q's own VrlPoint, pm(v) = p1(v) PL(P1(v)): still a
+// density on the VRL, so the estimator stays unbiased; what sharing one fit between
+// neighbouring pixels would cost (docs/maths.md#vrl-marginal-shared).
+inline Moments WholeMoments(const MediumGatherQuery<double>& q, const QuadratureSettings& s = {},
+                            const MediumGatherQuery<double>* fitted_for = nullptr) {
   constexpr int K = kCameraSamplerCount;
   VrlPoint<double> vp(q);
-  VrlMarginal<double> vm(q);
+  VrlMarginal<double> vm(fitted_for ? *fitted_for : q);
   Moments m;
   int inner_evaluations = 0;
   bool inner_converged = true;
@@ -159,7 +164,7 @@ inline Moments WholeMoments(const MediumGatherQuery<double>& q, const Quadrature
     inner_evaluations += c.evaluations;
     inner_converged = inner_converged && c.converged;
     inner_error = std::max(inner_error, c.rel_error);
-    double pm = vm.valid() ? vm.pdf(v) : p1;  // (a placeholder, replaced by NaN below)
+    double pm = vm.valid() ? p1 * vm.xi_density(vp.invert(v)) : p1;  // (a placeholder, replaced by NaN below)
     std::array<double, 2 * K + 1> out{c.first / p1};
     for (int k = 0; k < K; ++k) {
       out[k + 1] = c.second[k] / (p1 * p1);
