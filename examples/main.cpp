@@ -98,6 +98,7 @@ int main(int argc, char** argv) {
   std::optional<float> g, sigma_s, sigma_a, exposure;
   float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
   std::optional<float> vrl_bound;
+  double marginal_fraction = vrlis::integration::TransportSettings{}.marginal_fraction;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
@@ -125,6 +126,12 @@ int main(int argc, char** argv) {
                                      "learned from earlier passes, and with auto both steps' models by it "
                                      "(docs/maths.md#effort); off: every VRL gathered once, images reproducible")
       ->capture_default_str();
+  app.add_option("--marginal-fraction", marginal_fraction,
+                 "With +marginal: the share of the medium-to-medium gathers, those of the largest predicted second "
+                 "moments by the earlier passes, that take VrlMarginal's fit, the rest VrlPoint's density; the first "
+                 "pass fits all (docs/maths.md#vrl-marginal-where); 1: every gather, every pass")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--seed", seed, "Random seed: the same seed gives the same image at any thread count")
       ->capture_default_str();
   app.add_option("--threads", threads, "Worker threads (0: all cores)")->capture_default_str();
@@ -226,6 +233,7 @@ int main(int argc, char** argv) {
   settings.transport.vpl_bound = vpl_bound;
   if (vrl_bound) settings.transport.vrl_bound = *vrl_bound;
   settings.transport.effort.on = effort == "on";
+  settings.transport.marginal_fraction = marginal_fraction;
   std::atomic<int> rows_done{0};
   settings.rows_done = &rows_done;
   if (gather != "all") {
@@ -292,7 +300,7 @@ int main(int argc, char** argv) {
       {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather}, {"effort", effort},
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
-      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"vrl_bound", settings.transport.vrl_bound < vrlis::integration::kUnbounded ? nlohmann::json(settings.transport.vrl_bound) : nlohmann::json("inf")}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
+      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"marginal_fraction", marginal_fraction}, {"vrl_bound", settings.transport.vrl_bound < vrlis::integration::kUnbounded ? nlohmann::json(settings.transport.vrl_bound) : nlohmann::json("inf")}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
       {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds},
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;

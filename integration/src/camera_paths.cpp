@@ -51,7 +51,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
           detail::Timer timer(effort.on && effort.timed, &stats.seconds);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
                                                  effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound,
-                                                 medium_pair);
+                                                 medium_pair, count->marginal_scores);
         }
         if (effort.on) AddCall(effort, vrls.size(), gathered, &stats);
         L += gathered;

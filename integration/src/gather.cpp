@@ -75,12 +75,11 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
-    float weights[kChunk];  // read by decided gathers only
+    float weights[kChunk];  // for decided gathers, and VrlMarginal's choice of fits
     int samples[kChunk];
     double sum_y[kChunk], sum_y2[kChunk];  // per VRL, of its samples' unweighted contributions; decided, with stats
     for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]);
-    if (decided)
-      for (int i = 0; i < n; ++i) weights[i] = (throughput * chunk[i].flux).Rms();
+    for (int i = 0; i < n; ++i) weights[i] = (throughput * chunk[i].flux).Rms();
     const bool split = stats && decided;  // undecided, every VRL takes one sample
     if (split)
       for (int i = 0; i < n; ++i) samples[i] = 0, sum_y[i] = sum_y2[i] = 0;
@@ -153,7 +152,7 @@ float GatherShareOf(const ConnectionEnd& from, const vrlis::GatherSample<float>&
 Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
                     const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput,
                     const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, float bound,
-                    const vrlis::EffortSettings* pair) {
+                    const vrlis::EffortSettings* pair, vrlis::ScoreOctaves* marginal_scores) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
@@ -167,8 +166,10 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
       scene, first, last, throughput, effort, stats, weight_log, own, share,
       [&](const vrlis::EffortSettings& settings, Rng& numbers, const vrlis::VrlSegment<float>* segments,
           const float* weights, int n, auto& connect, vrlis::EffortTally* tally) {
+        // (The pair's gathers, for the statistics alone, are not scored.)
         vrlis::GatherMediumVrls(method, settings, camera, medium, segments, weights, n,
-                                [&] { return numbers.Uniform(); }, connect, tally);
+                                [&] { return numbers.Uniform(); }, connect, tally,
+                                &settings == &effort ? marginal_scores : nullptr);
       },
       pair);
 }
@@ -178,15 +179,15 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
   return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr, kUnbounded,
-                    nullptr);
+                    nullptr, nullptr);
 }
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput,
                               const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
-                              float bound, const vrlis::EffortSettings* pair) {
+                              float bound, const vrlis::EffortSettings* pair, vrlis::ScoreOctaves* marginal_scores) {
   return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats,
-                    weight_log, bound, pair);
+                    weight_log, bound, pair, marginal_scores);
 }
 
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,

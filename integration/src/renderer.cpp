@@ -1,6 +1,7 @@
 #include "vrlis_integration/renderer.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -70,11 +71,19 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   surface_effort.price = price_.price(GatherKind::Surface);
   medium_effort.within = price_.within(GatherKind::Medium);
   surface_effort.within = price_.within(GatherKind::Surface);
+  // VrlMarginal's fits for the top marginal_fraction of the gathers by the earlier passes'
+  // scores; the first pass fits every gather.
+  const bool scored = transport.sampling.vrl == vrlis::VrlSamplers::Of<vrlis::VrlMarginalEntry>() &&
+                      transport.marginal_fraction < 1;
+  if (scored && marginal_scores_.total() > 0)
+    medium_effort.marginal_threshold = marginal_scores_.Threshold(transport.marginal_fraction);
+  tbb::enumerable_thread_specific<vrlis::ScoreOctaves> pass_scores;
   const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     GatherCount count;
+    if (scored) count.marginal_scores = &pass_scores.local();
     if (!effort.on) {
-      Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count);
+      Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort);
       gathers.fetch_add(count.Total(), std::memory_order_relaxed);
       return L;
     }
@@ -119,6 +128,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     return L;
   });
   if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()));
+  for (const vrlis::ScoreOctaves& s : pass_scores) marginal_scores_ += s;
   if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
   return film;
 }

@@ -10,6 +10,10 @@
 // - The bounds of effort.hpp are at or above the gather's mean; batched in vector lanes they
 //   are the one-at-a-time bounds to rounding.
 // - An effort model replaces auto's rule by its sampler and leaves every other sampler.
+// - With VrlMarginal as step one and a threshold of scores, the gathers whose score reaches it
+//   take the fit's density and the others VrlPoint's (each gather's density is one of the two
+//   a one-at-a-time sampler gives it, so the estimator stays unbiased); ScoreOctaves' threshold
+//   fits at most the share of the scores asked for, and one octave lower more.
 #include <catch2/catch.hpp>
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
@@ -445,4 +449,62 @@ TEST_CASE("batched bounds in vector lanes agree with the bounds one at a time", 
   CHECK(worst_quick < 1e-5);  // measured 8.1e-7
   CHECK(worst_tight < 2e-4);  // measured 2.8e-5 (the cosines next to the camera line are ill-conditioned)
   CHECK(sabotaged > 1e-2);
+}
+
+TEST_CASE("VrlMarginal fits the gathers whose score reaches the threshold, the others take VrlPoint's density",
+          "[gather][effort]") {
+  Setup s = MakeSetup();
+  s.method = *vrlis::ParseGatherSamplers("full-product+marginal");
+  const int n = int(s.vrls.size());
+  std::vector<double> score(std::size_t(n), 0.0);
+  vrlis::MarginalFitScores(s.camera, s.medium, s.vrls.data(), s.weights.data(), n, score.data());
+  std::vector<double> sorted = score;
+  std::sort(sorted.begin(), sorted.end());
+  vrlis::EffortSettings effort;
+  effort.marginal_threshold = sorted[std::size_t(n / 2)];  // half the VRLs fitted
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<Real> u(0, 1);
+  int fitted = 0, pointed = 0, distinct = 0;
+  for (int run = 0; run < 40; ++run)
+    vrlis::GatherMediumVrls(s.method, effort, s.camera, s.medium, s.vrls.data(), s.weights.data(), n,
+                            [&] { return u(rng); },
+                            [&](int i, const vrlis::GatherSample<Real>& g, Real) {
+                              if (!(g.pdf_v > 0)) return;
+                              const vrlis::MediumGatherQuery<Real> q{s.camera, s.vrls[std::size_t(i)], s.medium};
+                              const double marginal = vrlis::VrlMarginal<Real>(q).pdf(g.v);
+                              const double point = vrlis::VrlPoint<Real>(q).pdf(g.v);
+                              const bool fit = score[std::size_t(i)] >= effort.marginal_threshold;
+                              INFO("VRL " << i << (fit ? " fitted" : " not fitted") << ", v " << g.v);
+                              REQUIRE(g.pdf_v == Approx(fit ? marginal : point).epsilon(2e-3));
+                              ++(fit ? fitted : pointed);
+                              distinct += std::abs(marginal / point - 1) > 0.05;  // the two can be told apart
+                            });
+  CHECK(fitted > 100);
+  CHECK(pointed > 100);
+  CHECK(distinct > 100);
+}
+
+TEST_CASE("ScoreOctaves: the threshold fits at most the share asked for, one octave lower more", "[gather][effort]") {
+  vrlis::ScoreOctaves octaves;
+  CHECK(std::isinf(octaves.Threshold(0.2)));  // nothing learned: no gather fitted by it
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> exponent(-40, 40);
+  std::vector<double> scores;
+  for (int i = 0; i < 20000; ++i) {
+    scores.push_back(std::exp2(exponent(rng)));
+    octaves.Add(scores.back());
+  }
+  octaves.Add(0);
+  octaves.Add(std::numeric_limits<double>::quiet_NaN());
+  REQUIRE(octaves.total() == scores.size());  // zeros and NaN uncounted
+  auto share_from = [&](double threshold) {
+    return double(std::count_if(scores.begin(), scores.end(), [&](double x) { return x >= threshold; })) /
+           double(scores.size());
+  };
+  for (double fraction : {0.01, 0.05, 0.2, 0.5, 0.9}) {
+    const double threshold = octaves.Threshold(fraction);
+    INFO("fraction " << fraction << ", threshold " << threshold);
+    CHECK(share_from(threshold) <= fraction);
+    CHECK(share_from(threshold / 2) > fraction);
+  }
 }

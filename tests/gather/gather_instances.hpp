@@ -12,7 +12,7 @@ static_assert(vrlis::SegmentSamplers::kCount == 6 && vrlis::VrlSamplers::kCount 
 #define VRLIS_TEST_MEDIUM_GATHERS(kind, StepOne, Camera, Real)                                                     \
   kind template void vrlis::SampleMediumGathers<vrlis::StepOne::Sampler<Real>, vrlis::Camera::Sampler<Real>, Real>( \
       vrlis::ValidQuery, const vrlis::RaySegment<Real>&, const vrlis::Medium<Real>&, const vrlis::VrlSegment<Real>*, \
-      int, const Real*, const Real*, vrlis::GatherSample<Real>*, bool, bool);
+      int, const Real*, const Real*, vrlis::GatherSample<Real>*, bool, bool, const bool*);
 #define VRLIS_TEST_SURFACE_GATHERS(kind, Camera, Real)                                                              \
   kind template void vrlis::SampleSurfaceGathers<vrlis::Camera::Sampler<Real>, Real>(                               \
       vrlis::ValidQuery, vrlis::Vec3<Real>, vrlis::Vec3<Real>, const vrlis::Medium<Real>&,                          \

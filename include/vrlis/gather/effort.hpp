@@ -63,6 +63,14 @@ struct EffortSettings {
   // `model` alone; the renderer's choice from earlier passes where the decisions cost more
   // time than the variance they save is worth (docs/maths.md#effort-decide).
   bool decide = true;
+  // With VrlMarginal as step one: the gathers whose predicted second moment
+  // (MarginalFitScores) is below this take VrlPoint's density instead of the fit. One fit
+  // costs about four Novák gathers, and a few gathers hold most of an image's variance; a
+  // renderer sets it, pass by pass, to a quantile of the scores of the passes before
+  // (ScoreOctaves; docs/maths.md#vrl-marginal-where). 0: every gather fitted; +infinity:
+  // none. With the control on or off; not for `auto`'s accurate model, which the control
+  // gives only to the gathers that ask for it.
+  double marginal_threshold = 0;
   // Whether the call measures its seconds (EffortTally). A clock read is a sizeable part of
   // an equiangular gather, so a renderer may time a random share of its calls and weigh their
   // seconds by the inverse of that share.
@@ -338,5 +346,61 @@ void SurfaceGatherBounds(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<R
     return SurfaceGatherQuickBound<true>(point, normal, vrl, m);
   }, [&](const VrlSegment<Real>& vrl) { return SurfaceGatherBound<true>(point, normal, vrl, m); });
 }
+
+// The score by which VrlMarginal's fits are given (EffortSettings::marginal_threshold):
+// score[i] is gather i's predicted second moment (weights[i] x MediumGatherBound)^2 (weights
+// null: 1 each; NaN: 0). A function of the queries alone, not of any gather's numbers, so a
+// density chosen by it leaves the estimator unbiased.
+template <typename Real>
+void MarginalFitScores(const RaySegment<Real>& camera, const Medium<Real>& m, const VrlSegment<Real>* vrls,
+                       const Real* weights, int count, double* score) {
+  for (int first = 0; first < count; first += kBoundBatch) {
+    const int n = std::min(kBoundBatch, count - first);
+    Real tight[kBoundBatch];
+    MediumGatherBounds(camera, vrls + first, n, m, static_cast<Real*>(nullptr), tight);
+    for (int i = 0; i < n; ++i) {
+      const double s = Sqr(double(weights ? weights[first + i] : Real(1)) * double(tight[i]));
+      score[first + i] = std::isnan(s) ? 0 : s;
+    }
+  }
+}
+
+// How many scores fell in each octave [2^(k - kOffset), 2^(k + 1 - kOffset)) (the ends
+// clamped; zeros uncounted): what a renderer learns from a pass to set the next pass's
+// marginal_threshold.
+struct ScoreOctaves {
+  static constexpr int kBins = 160, kOffset = 100;
+  std::uint64_t count[kBins] = {};
+
+  void Add(double score) {
+    if (!(score > 0)) return;
+    const int k = score < std::numeric_limits<double>::infinity() ? std::ilogb(score) + kOffset : kBins - 1;
+    ++count[std::clamp(k, 0, kBins - 1)];
+  }
+  ScoreOctaves& operator+=(const ScoreOctaves& o) {
+    for (int k = 0; k < kBins; ++k) count[k] += o.count[k];
+    return *this;
+  }
+  std::uint64_t total() const {
+    std::uint64_t n = 0;
+    for (std::uint64_t c : count) n += c;
+    return n;
+  }
+  // The lower end of the lowest octave such that the octaves from it up hold at most
+  // `fraction` of the counted scores (to an octave: a threshold that fits about that share of
+  // gathers); +infinity when none do, or nothing was counted.
+  double Threshold(double fraction) const {
+    const std::uint64_t n = total();
+    const double limit = fraction * double(n);
+    double above = 0, threshold = std::numeric_limits<double>::infinity();
+    if (n == 0) return threshold;
+    for (int k = kBins - 1; k >= 0; --k) {
+      above += double(count[k]);
+      if (above > limit) break;
+      threshold = std::ldexp(1.0, k - kOffset);
+    }
+    return threshold;
+  }
+};
 
 }  // namespace vrlis

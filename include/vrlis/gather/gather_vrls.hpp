@@ -10,7 +10,9 @@
 //       });
 //
 // weights[i] >= 0 scales VRL i's predicted contribution (its power times the camera path's
-// throughput, in the units of the price); unused with the effort control off. uniform()
+// throughput, in the units of the price): for the effort control's decisions, and with
+// VrlMarginal as step one for the choice of the gathers it fits
+// (EffortSettings::marginal_threshold, with the control on or off); null: all equal. uniform()
 // returns a number in [0, 1). With the control off, or the call's gathers undecided
 // (EffortSettings::decide), every VRL draws exactly its gather's numbers (two, or one at a
 // surface), in order, valid or not, so images do not depend on batching or validity; decided,
@@ -21,6 +23,7 @@
 #include <cstdint>
 #include <optional>
 #include <type_traits>
+#include <vector>
 
 #include "effort.hpp"
 #include "medium_gather.hpp"
@@ -144,25 +147,41 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
 // tally, if set, adds the predictions (decided gathers only) and, in a timed call
-// (EffortSettings::timed), the seconds of sampling.
+// (EffortSettings::timed), the seconds of sampling; marginal_scores, if set and VrlMarginal
+// is step one, the gathers' MarginalFitScores.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
                       const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,
-                      Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr) {
+                      Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr,
+                      ScoreOctaves* marginal_scores = nullptr) {
   const bool valid = Validate(camera) == QueryError::None && Validate(medium) == QueryError::None;
   WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
     using VrlSampler = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
     constexpr bool policy = std::is_same_v<StepTwo, AutoEntry::Sampler<Real>>;
+    // VrlMarginal's fits for the gathers whose score reaches the threshold (not auto's
+    // accurate model, which is already given by demand).
+    constexpr bool marginal = std::is_same_v<VrlSampler, VrlMarginalEntry::Sampler<Real>>;
+    const bool chosen = marginal && valid && effort.marginal_threshold > 0;
+    constexpr int kStackScores = 256;
+    double stack_score[marginal ? kStackScores : 1];
+    std::vector<double> heap_score;
+    double* score = stack_score;
+    if (marginal && valid && (chosen || marginal_scores)) {
+      if (count > kStackScores) heap_score.resize(std::size_t(count)), score = heap_score.data();
+      detail::WithWidestLanes([&] { MarginalFitScores(camera, medium, vrls, weights, count, score); });
+      for (int i = 0; marginal_scores && i < count; ++i) marginal_scores->Add(score[i]);
+    }
     detail::GatherEachVrl<2, policy>(
         effort, vrls, weights, count, valid, uniform,
         [&](int first, int n, Real* quick, Real* tight) {
           MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
-          auto with = [&](auto one, auto two) {
+          auto with = [&](auto one, auto two, const bool* fitted = nullptr) {
             SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
-                ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples, effort.measure_mixture);
+                ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples, effort.measure_mixture,
+                true, fitted);
           };
           // A model in place of auto's rule: its segment sampler, after VrlMarginal for the
           // accurate one and VrlPoint for the others.
@@ -174,7 +193,9 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
                 with(Type<VrlPointEntry::Sampler<Real>>{}, Two{});
               });
           }
-          with(Type<VrlSampler>{}, Type<StepTwo>{});
+          bool fitted[std::decay_t<decltype(b)>::kSize];
+          for (int k = 0; chosen && k < b.count; ++k) fitted[k] = score[b.source[k]] >= effort.marginal_threshold;
+          with(Type<VrlSampler>{}, Type<StepTwo>{}, chosen ? fitted : nullptr);
         },
         connect, tally);
   });

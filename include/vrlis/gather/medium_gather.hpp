@@ -132,7 +132,7 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 [[gnu::flatten]] void SampleMediumGathersAsBuilt(const RaySegment<Real>& camera, const Medium<Real>& medium,
                                                  const VrlSegment<Real>* vrls, int count, const Real* u_vrl,
                                                  const Real* u_camera, GatherSample<Real>* out,
-                                                 bool measure_mixture) {
+                                                 bool measure_mixture, const bool* fitted) {
   constexpr int kSize = kGatherChunk;
   for (int first = 0; first < count; first += kSize) {
     const int n = std::min(kSize, count - first);
@@ -141,7 +141,8 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     if constexpr (std::is_same_v<StepOneSampler, VrlPoint<Real>>) {
       SampleVrlPoints<kSize>(ValidQuery{}, camera, vrls + first, n, u_vrl + first, v);
     } else {
-      StepOneSampler::template SampleLanes<kSize>(ValidQuery{}, camera, medium, vrls + first, n, u_vrl + first, v);
+      StepOneSampler::template SampleLanes<kSize>(ValidQuery{}, camera, medium, vrls + first, n, u_vrl + first, v,
+                                                  fitted ? fitted + first : nullptr);
     }
     // The lanes' inputs (the unused lanes repeat the first gather).
     const VrlLanes<Real, kSize> vrl(vrls + first, n);
@@ -207,15 +208,17 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
 }  // namespace detail
 
 // The batch above, on the widest vector lanes the processor has (core/dispatch.hpp);
-// `widest` false: as built.
+// `widest` false: as built. fitted, if set, says which gathers' step one VrlMarginal fits
+// (VrlMarginal::SampleLanes; the others take VrlPoint's density); other step ones ignore it.
 template <typename StepOneSampler, typename CameraSampler, typename Real>
 void SampleMediumGathers(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
                          const VrlSegment<Real>* vrls, int count, const Real* u_vrl, const Real* u_camera,
-                         GatherSample<Real>* out, bool measure_mixture = false, bool widest = true) {
+                         GatherSample<Real>* out, bool measure_mixture = false, bool widest = true,
+                         const bool* fitted = nullptr) {
   detail::WithWidestLanes(
       [&] {
         detail::SampleMediumGathersAsBuilt<StepOneSampler, CameraSampler>(camera, medium, vrls, count, u_vrl,
-                                                                          u_camera, out, measure_mixture);
+                                                                          u_camera, out, measure_mixture, fitted);
       },
       widest);
 }

@@ -105,16 +105,23 @@ class VrlMarginal {
 
   // Step one for count (1 to kSize) VRLs against one camera segment, each a valid gather
   // query with it (SampleMediumGathers): out[i] is VrlMarginal({camera, vrls[i], medium})
-  // .sample_pdf(u[i]) to rounding. A run of equal VRLs (a split gather's samples) is fitted
-  // once; the VRL points are SampleVrlPoints', in lanes over the gathers.
+  // .sample_pdf(u[i]) to rounding, or, where fitted is set and fitted[i] false, VrlPoint's
+  // sample_pdf(u[i]) (a flat fit: no fit made). A run of equal VRLs (a split gather's
+  // samples) is fitted once; the VRL points are SampleVrlPoints', in lanes over the gathers.
   template <int kSize>
   static void SampleLanes(ValidQuery, const RaySegment<Real>& camera, const Medium<Real>& medium,
-                          const VrlSegment<Real>* vrls, int count, const Real* u, SegmentSample<Real>* out) {
+                          const VrlSegment<Real>* vrls, int count, const Real* u, SegmentSample<Real>* out,
+                          const bool* fitted = nullptr) {
     Real xi[kSize], xi_pdf[kSize];
     for (int first = 0, i = 0; first < count; first = i) {
-      const VrlMarginal fitted(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first], medium});
-      for (; i < count && SameVrl(vrls[first], vrls[i]); ++i) {
-        const SegmentSample<Real> s = fitted.fit_.sample_pdf(u[i]);
+      if (fitted && !fitted[first]) {
+        xi[i] = u[i], xi_pdf[i] = 1;
+        ++i;
+        continue;
+      }
+      const VrlMarginal marginal(ValidQuery{}, MediumGatherQuery<Real>{camera, vrls[first], medium});
+      for (; i < count && SameVrl(vrls[first], vrls[i]) && (!fitted || fitted[i]); ++i) {
+        const SegmentSample<Real> s = marginal.fit_.sample_pdf(u[i]);
         xi[i] = s.t, xi_pdf[i] = s.pdf;
       }
     }

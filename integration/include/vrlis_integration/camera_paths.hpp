@@ -21,6 +21,9 @@ struct GatherCount {
   std::uint64_t medium_to_medium = 0, medium_to_surface = 0;
   EffortStats medium_effort, surface_effort;  // with the effort control on only
   RemainderStats remainder;                   // with the effort control on only
+  // If set, with VrlMarginal as step one: the medium-to-medium gathers' scores
+  // (GatherMediumToMedium's marginal_scores).
+  vrlis::ScoreOctaves* marginal_scores = nullptr;
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 

@@ -45,11 +45,14 @@ Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, 
 // is taken up to the geometry term `bound` (share.hpp; the remainder carries the rest).
 // `pair`, with stats: the same VRLs are also gathered under these settings, on the same
 // random numbers, for the statistics alone, not the radiance (EffortStats::pair_delta).
+// `marginal_scores`, if set and VrlMarginal is step one: the gathers' scores, from which the
+// renderer learns EffortSettings::marginal_threshold.
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
                               const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
                               Spectrum throughput = Spectrum(1.f), const vrlis::EffortSettings& effort = {},
                               EffortStats* stats = nullptr, WeightLog* weight_log = nullptr,
-                              float bound = kUnbounded, const vrlis::EffortSettings* pair = nullptr);
+                              float bound = kUnbounded, const vrlis::EffortSettings* pair = nullptr,
+                              vrlis::ScoreOctaves* marginal_scores = nullptr);
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.

@@ -48,7 +48,9 @@ class Renderer {
 // The bidirectional VRL pipeline: light pass, then camera pass. With the transport's effort
 // control on, the renderer learns the price of variance from each pass it renders and the
 // next pass's gathers use it: a pass then depends on the passes this renderer rendered
-// before it (and on their measured times), not on (seed, pass) alone.
+// before it (and on their measured times), not on (seed, pass) alone. With VrlMarginal as
+// step one the same holds of which gathers it fits (TransportSettings::marginal_fraction),
+// learned from the scores of the earlier passes: deterministic, so images stay reproducible.
 class VrlRenderer : public Renderer {
  public:
   VrlRenderer(const Scene& scene, const RenderSettings& settings)
@@ -59,6 +61,7 @@ class VrlRenderer : public Renderer {
 
  private:
   EffortPrice price_;
+  vrlis::ScoreOctaves marginal_scores_;  // of the passes rendered so far
 };
 
 // The reference: a volumetric path tracer with next-event estimation.

@@ -52,6 +52,12 @@ struct TransportSettings {
   // The effort control of both VRL gathers (off: every VRL gathered once); its price is the
   // renderer's, learned pass by pass (effort_price.hpp).
   vrlis::EffortSettings effort;
+  // With VrlMarginal as step one: the share of the medium-to-medium gathers, those of the
+  // largest predicted second moments, that take its fit; the rest take VrlPoint's density.
+  // The renderer sets effort.marginal_threshold to it pass by pass from the scores of the
+  // passes before (the first pass fits every gather; docs/maths.md#vrl-marginal-where). 1:
+  // every gather fitted, in every pass.
+  double marginal_fraction = 0.2;
 };
 
 }  // namespace vrlis::integration
