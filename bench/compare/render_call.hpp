@@ -59,18 +59,23 @@ class PassRenderer {
  public:
   PassRenderer(const vrlis::integration::Scene& scene, const vrlis::integration::RenderSettings& settings) : scene_(scene), settings_(settings) {}
   // With the effort control on, `price` holds what the passes before this one taught it
-  // (one per replicate: a pass's decisions see only earlier passes of its own render).
+  // (one per replicate: a pass's decisions see only earlier passes of its own render), and
+  // `marginal_scores` likewise which gathers VrlMarginal fits (without it every pass is a
+  // first pass and fits every gather).
   vrlis::integration::Film Render(const Method& method, std::uint64_t seed, std::uint64_t pass, double* seconds,
-                                  vrlis::integration::EffortPrice* price = nullptr) {
+                                  vrlis::integration::EffortPrice* price = nullptr,
+                                  vrlis::ScoreOctaves* marginal_scores = nullptr) {
     vrlis::integration::RenderSettings settings = settings_;
     settings.transport.sampling = method.sampler;
     settings.transport.effort.on = method.effort;
     vrlis::integration::VrlRenderer renderer(scene_, settings);
     if (method.effort && price) renderer.set_effort_price(*price);
+    if (marginal_scores) renderer.set_marginal_scores(*marginal_scores);
     auto start = std::chrono::steady_clock::now();
     vrlis::integration::Film film = renderer.RenderPass(seed, pass, nullptr);
     *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (method.effort && price) *price = renderer.effort_price();
+    if (marginal_scores) *marginal_scores = renderer.marginal_scores();
     return film;
   }
 

@@ -50,6 +50,7 @@ struct Runner {
   std::vector<double> seconds;  // per replicate
   std::vector<Progression> progression;
   std::vector<vrlis::integration::EffortPrice> prices;  // per replicate, with the effort control on
+  std::vector<vrlis::ScoreOctaves> marginal_scores;     // per replicate, with VrlMarginal as step one
 
   int per_replicate = 0;  // passes in each replicate
 
@@ -121,7 +122,8 @@ StudyResult RunStudy(const StudyConfig& config) {
     runners.push_back({s, std::vector<PassStatistics>(replicates, PassStatistics(values)), PassStatistics(values),
                        std::vector<double>(replicates, 0.0), std::vector<Progression>(replicates),
                        std::vector<vrlis::integration::EffortPrice>(
-                           replicates, vrlis::integration::EffortPrice(config.width, config.height))});
+                           replicates, vrlis::integration::EffortPrice(config.width, config.height)),
+                       std::vector<vrlis::ScoreOctaves>(replicates)});
 
   // Whole cycles (one pass of every replicate) so that all replicates of a sampler hold the
   // same number of passes, at least min_passes. A sampler stops once it
@@ -146,7 +148,7 @@ StudyResult RunStudy(const StudyConfig& config) {
         double seconds = 0;
         std::vector<double> pass =
             FromFilm(renderer.Render(run.sampler, seeds[rep], static_cast<std::uint64_t>(run.per_replicate), &seconds,
-                                     &run.prices[rep]));
+                                     &run.prices[rep], &run.marginal_scores[rep]));
         run.seconds[rep] += seconds;
         run.replicates[rep].Add(pass);
         run.all.Add(pass);

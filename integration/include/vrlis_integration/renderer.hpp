@@ -58,6 +58,9 @@ class VrlRenderer : public Renderer {
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
   const EffortPrice& effort_price() const { return price_; }
   void set_effort_price(const EffortPrice& price) { price_ = price; }
+  // The scores VrlMarginal's fits are given by, learned like the price.
+  const vrlis::ScoreOctaves& marginal_scores() const { return marginal_scores_; }
+  void set_marginal_scores(const vrlis::ScoreOctaves& scores) { marginal_scores_ = scores; }
 
  private:
   EffortPrice price_;
