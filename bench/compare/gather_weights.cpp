@@ -21,6 +21,7 @@ GatherWeightsResult MeasureGatherWeights(const GatherWeightsConfig& config) {
   scene.settings.transport.weight_log = &log;
   PassRenderer recorded(scene.built.scene, scene.settings);
   vrlis::integration::EffortPrice price(config.width, config.height);
+  vrlis::ScoreOctaves marginal_scores;  // which gathers VrlMarginal fits, learned like the price
   GatherWeightsResult r;
   r.config = config;
   r.g = scene.built.scene.medium.g;
@@ -29,7 +30,7 @@ GatherWeightsResult MeasureGatherWeights(const GatherWeightsConfig& config) {
     double seconds = 0;
     PassRenderer& renderer = pass < vrlis::integration::EffortPrice::kMinPasses ? first : recorded;
     const vrlis::integration::Film film =
-        renderer.Render(config.method, config.seed, static_cast<std::uint64_t>(pass), &seconds, &price);
+        renderer.Render(config.method, config.seed, static_cast<std::uint64_t>(pass), &seconds, &price, &marginal_scores);
     r.seconds += seconds;
     for (const vrlis::integration::Spectrum& p : film.pixels) pixel_sum += std::sqrt(p.MeanSquare());
   }

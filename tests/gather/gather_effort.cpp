@@ -457,7 +457,8 @@ TEST_CASE("VrlMarginal fits the gathers whose score reaches the threshold, the o
   s.method = *vrlis::ParseGatherSamplers("full-product+marginal");
   const int n = int(s.vrls.size());
   std::vector<double> score(std::size_t(n), 0.0);
-  vrlis::MarginalFitScores(s.camera, s.medium, s.vrls.data(), s.weights.data(), n, score.data());
+  std::vector<Real> bound(std::size_t(n), 0);
+  vrlis::MarginalFitScores(s.camera, s.medium, s.vrls.data(), s.weights.data(), n, bound.data(), score.data());
   std::vector<double> sorted = score;
   std::sort(sorted.begin(), sorted.end());
   vrlis::EffortSettings effort;

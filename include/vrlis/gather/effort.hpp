@@ -349,18 +349,18 @@ void SurfaceGatherBounds(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<R
 
 // The score by which VrlMarginal's fits are given (EffortSettings::marginal_threshold):
 // score[i] is gather i's predicted second moment (weights[i] x MediumGatherBound)^2 (weights
-// null: 1 each; NaN: 0). A function of the queries alone, not of any gather's numbers, so a
-// density chosen by it leaves the estimator unbiased.
+// null: 1 each; NaN: 0), bound[i] the bound itself (the effort control's tight bound, which
+// the call's decisions then need not take again). A function of the queries alone, not of
+// any gather's numbers, so a density chosen by it leaves the estimator unbiased.
 template <typename Real>
 void MarginalFitScores(const RaySegment<Real>& camera, const Medium<Real>& m, const VrlSegment<Real>* vrls,
-                       const Real* weights, int count, double* score) {
+                       const Real* weights, int count, Real* bound, double* score) {
   for (int first = 0; first < count; first += kBoundBatch) {
     const int n = std::min(kBoundBatch, count - first);
-    Real tight[kBoundBatch];
-    MediumGatherBounds(camera, vrls + first, n, m, static_cast<Real*>(nullptr), tight);
-    for (int i = 0; i < n; ++i) {
-      const double s = Sqr(double(weights ? weights[first + i] : Real(1)) * double(tight[i]));
-      score[first + i] = std::isnan(s) ? 0 : s;
+    MediumGatherBounds(camera, vrls + first, n, m, static_cast<Real*>(nullptr), bound + first);
+    for (int i = first; i < first + n; ++i) {
+      const double s = Sqr(double(weights ? weights[i] : Real(1)) * double(bound[i]));
+      score[i] = std::isnan(s) ? 0 : s;
     }
   }
 }

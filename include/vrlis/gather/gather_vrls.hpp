@@ -163,19 +163,30 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
     // accurate model, which is already given by demand).
     constexpr bool marginal = std::is_same_v<VrlSampler, VrlMarginalEntry::Sampler<Real>>;
     const bool chosen = marginal && valid && effort.marginal_threshold > 0;
+    const bool scored = marginal && valid && (chosen || marginal_scores);
     constexpr int kStackScores = 256;
     double stack_score[marginal ? kStackScores : 1];
+    Real stack_bound[marginal ? kStackScores : 1];
     std::vector<double> heap_score;
+    std::vector<Real> heap_bound;
     double* score = stack_score;
-    if (marginal && valid && (chosen || marginal_scores)) {
-      if (count > kStackScores) heap_score.resize(std::size_t(count)), score = heap_score.data();
-      detail::WithWidestLanes([&] { MarginalFitScores(camera, medium, vrls, weights, count, score); });
+    Real* bound = stack_bound;
+    if (scored) {
+      if (count > kStackScores) {
+        heap_score.resize(std::size_t(count)), score = heap_score.data();
+        heap_bound.resize(std::size_t(count)), bound = heap_bound.data();
+      }
+      detail::WithWidestLanes([&] { MarginalFitScores(camera, medium, vrls, weights, count, bound, score); });
       for (int i = 0; marginal_scores && i < count; ++i) marginal_scores->Add(score[i]);
     }
     detail::GatherEachVrl<2, policy>(
         effort, vrls, weights, count, valid, uniform,
         [&](int first, int n, Real* quick, Real* tight) {
-          MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
+          if (scored && tight) {  // taken with the scores
+            std::copy(bound + first, bound + first + n, tight);
+            tight = nullptr;
+          }
+          if (quick || tight) MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
           auto with = [&](auto one, auto two, const bool* fitted = nullptr) {
