@@ -94,5 +94,8 @@ void RegisterFit();
 void RegisterEstimator();
 void RegisterVrlPoint();
 void RegisterGather();
+void RegisterWork();
+// Work/ray/...: only where the lab is built with the example scenes (VRLIS_BENCH_RAYS).
+void RegisterRays();
 
 }  // namespace vrlis::bench

@@ -257,7 +257,7 @@ int main(int argc, char** argv) {
   const bool timed = app.count("--time") > 0;
   vrlis::integration::Accumulator acc(width, height);
   std::uint64_t vrl_count = 0, gathers = 0;
-  double pass_seconds = 0;
+  double pass_seconds = 0, pass_work = 0;
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   // The bar is redrawn from its own thread so that it moves within a pass (rows_done).
@@ -290,6 +290,7 @@ int main(int argc, char** argv) {
     vrl_count += stats.vrls;
     gathers += stats.gathers;
     pass_seconds += stats.seconds;
+    pass_work += stats.work;
   }
   finished.store(true);
   if (progress.joinable()) progress.join();
@@ -301,7 +302,7 @@ int main(int argc, char** argv) {
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
       {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"marginal_fraction", marginal_fraction}, {"vrl_bound", settings.transport.vrl_bound < vrlis::integration::kUnbounded ? nlohmann::json(settings.transport.vrl_bound) : nlohmann::json("inf")}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
-      {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds},
+      {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds}, {"counted_work", pass_work},
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;
   if (ref) summary["rmse"] = Rmse(image, *ref);

@@ -15,7 +15,7 @@
 namespace vrlis::compare {
 
 // What the study compares: the gather's samplers, and whether the effort control
-// (vrlis/gather/effort.hpp) decides how often each gather is taken. Named as the samplers,
+// (vrlis/effort/policy.hpp) decides how often each gather is taken. Named as the samplers,
 // with "+effort" when the control is on.
 struct Method {
   GatherSamplers sampler{};

@@ -20,7 +20,10 @@
 #include "gather/medium_gather.hpp"
 #include "gather/surface_gather.hpp"
 #include "gather/point_light_gather.hpp"
-#include "gather/effort.hpp"
+#include "effort/policy.hpp"
+#include "effort/bounds.hpp"
+#include "effort/marginal_fits.hpp"
+#include "effort/work.hpp"
 #include "gather/gather_vrls.hpp"
 #include "xyz.hpp"
 

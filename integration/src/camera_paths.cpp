@@ -48,7 +48,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
         const std::uint64_t before = stats.gathers;
         Spectrum gathered;
         {
-          detail::Timer timer(effort.on && effort.timed, &stats.seconds);
+          WorkScope scope(effort.on ? &stats.work : nullptr);
           gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
                                                  effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound,
                                                  medium_pair, count->marginal_scores);
@@ -60,7 +60,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
       if (tr.surface_to_medium) L += beta * GatherVpls(vpl_sampler, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
       if (tr.indirect)  // a medium vertex by free flight, continued by path tracing
-        L += SplitRemainder(remainder_rate, rng, remainder_stats, medium_effort.timed, [&] {
+        L += SplitRemainder(remainder_rate, rng, remainder_stats, [&] {
           float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
           if (!(d < iv.b)) return Spectrum();
           float u1 = rng.Uniform(), u2 = rng.Uniform();
@@ -89,7 +89,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       const std::uint64_t before = stats.gathers;
       Spectrum gathered;
       {
-        detail::Timer timer(effort.on && effort.timed, &stats.seconds);
+        WorkScope scope(effort.on ? &stats.work : nullptr);
         gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
                                                 effort, effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
       }
@@ -100,7 +100,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_samples, tr.vpl_bound, rng);
     if (tr.indirect)
-      L += SplitRemainder(remainder_rate, rng, remainder_stats, medium_effort.timed, [&] {
+      L += SplitRemainder(remainder_rate, rng, remainder_stats, [&] {
         float u1 = rng.Uniform(), u2 = rng.Uniform();
         Ray next{hit.p, SampleCosineHemisphere(nf, u1, u2)};
         const RemainderStart start{{hit.p, nf, true}, {nf, 0, true}};

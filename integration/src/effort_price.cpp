@@ -19,18 +19,6 @@ double TrimmedMean(std::vector<double> values) {
   return sum / double(kept);
 }
 
-// A timed pixel's stats with their seconds weighted by w (an untimed pixel's are 0).
-EffortStats WeighSeconds(EffortStats s, double w) {
-  s.seconds *= w, s.sample_seconds *= w;
-  s.rule_seconds *= w, s.cheapest_seconds *= w, s.mixture_seconds *= w;
-  s.accurate_seconds *= w, s.pair_seconds *= w;
-  return s;
-}
-RemainderStats WeighSeconds(RemainderStats s, double w) {
-  s.seconds *= w;
-  return s;
-}
-
 // The variance of one pass's pixel values: half the squared difference of horizontal
 // neighbours (x and x + 1, x even; it overstates the variance at edges), the mean over the
 // pairs with the largest thousandth left out; of the pairs whose first pixel `use` flags, if given.
@@ -49,10 +37,9 @@ double NeighbourVariance(const std::vector<double>& values, int width, int heigh
 
 }  // namespace
 
-EffortPrice::EffortPrice(int width, int height, double timed_share)
+EffortPrice::EffortPrice(int width, int height)
     : width_(width),
       height_(height),
-      timed_share_(timed_share),
       pixels_(static_cast<std::size_t>(width) * height),
       tiles_x_((width + kTile - 1) / kTile) {
   for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_);
@@ -72,7 +59,7 @@ EffortPrice::PixelStats& EffortPrice::BeginPass() {
   return pass_;
 }
 
-void EffortPrice::Add(const Film& pass, double pixel_seconds) {
+void EffortPrice::Add(const Film& pass, double pixel_work) {
   const std::vector<EffortStats>& medium = pass_.medium;
   const std::vector<EffortStats>& surface = pass_.surface;
   const std::vector<RemainderStats>& remainder = pass_.remainder;
@@ -92,15 +79,14 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
       if (decided) ++into.decided[kind];
     }
   }
-  const double timing = 1 / timing_rate();  // of this pass's timed pixels' seconds
   EffortStats total[2];
   for (std::size_t tile = 0; tile < pass_remainder_.size(); ++tile) {
-    const RemainderStats r = WeighSeconds(std::exchange(pass_remainder_[tile], {}), timing);
+    const RemainderStats r = std::exchange(pass_remainder_[tile], {});
     remainder_ += r;
     remainder_tiles_[tile] += r;
     for (int kind = 0; kind < 2; ++kind)
       for (int decided = 0; decided < 2; ++decided) {
-        const EffortStats p = WeighSeconds(std::exchange(pass_tiles_[kind][decided][tile], {}), timing);
+        const EffortStats p = std::exchange(pass_tiles_[kind][decided][tile], {});
         total[kind] += p;
         tiles_[kind][tile] += p;
         if (price_[kind] > 0) (decided ? decided_ : undecided_)[kind] += p;
@@ -132,7 +118,7 @@ void EffortPrice::Add(const Film& pass, double pixel_seconds) {
     const double change = NeighbourVariance(accurate, width_, height_, &paired) - NeighbourVariance(rendered, width_, height_);
     if (std::isfinite(change)) accurate_change_ = change;
   }
-  into.pixel_seconds += timing * pixel_seconds;
+  into.pixel_work += pixel_work;
   ++into.count;
   for (int kind = 0; kind < 2; ++kind) {
     gathers_[kind] += total[kind];
@@ -157,7 +143,7 @@ void EffortPrice::Refresh() {
     if (width_ < 2) return;
     variance = NeighbourVariance(p.sum, width_, height_);
   }
-  const double pixel_cost = p.pixel_seconds / (n * double(pixels_));
+  const double pixel_cost = p.pixel_work / (n * double(pixels_));
   variance_ = variance, pixel_cost_ = pixel_cost;
   for (int kind = 0; kind < 2; ++kind) {
     const EffortStats& g = gathers_[kind];
@@ -165,10 +151,10 @@ void EffortPrice::Refresh() {
     const EffortStats& c = controlled_[kind];
     // One gather's cost, its decision's included, from the passes that took every gather once
     // (the controlled passes charge the decisions of the gathers not taken to those taken, a
-    // feedback), scaled to the models the controlled passes chose by their sampling seconds.
-    auto sampling = [](const EffortStats& s) { return s.gathers > 0 ? s.sample_seconds / double(s.gathers) : 0.0; };
+    // feedback), scaled to the models the controlled passes chose by their sampling work.
+    auto sampling = [](const EffortStats& s) { return s.gathers > 0 ? s.sample_work / double(s.gathers) : 0.0; };
     const double models = sampling(c) > 0 && sampling(u) > 0 ? sampling(c) / sampling(u) : 1;
-    const double gather_cost = u.gathers > 0 ? models * u.seconds / double(u.gathers) : 0;
+    const double gather_cost = u.gathers > 0 ? models * u.work / double(u.gathers) : 0;
     const double calibration = g.predicted > 0 ? g.measured / g.predicted : 0;
     price_[kind] = variance > 0 && gather_cost > 0 && calibration > 0
                        ? calibration * pixel_cost / (variance * gather_cost)
@@ -186,8 +172,8 @@ void EffortPrice::Refresh() {
 double EffortPrice::RemainderDemand(std::size_t t) const {
   const RemainderStats& tile = remainder_tiles_[t];
   constexpr double kFewPaths = 16;  // below which a tile's cost is too noisy
-  const RemainderStats& timed = tile.paths >= kFewPaths ? tile : remainder_;
-  const double cost = timed.paths > 0 ? timed.seconds / timed.paths : 0;
+  const RemainderStats& counted = tile.paths >= kFewPaths ? tile : remainder_;
+  const double cost = counted.paths > 0 ? counted.work / counted.paths : 0;
   if (!(value_of_time() > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
   return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
 }
@@ -195,7 +181,7 @@ double EffortPrice::RemainderDemand(std::size_t t) const {
 EffortPrice::ModelWeighing EffortPrice::WeighModels(int k) const {
   ModelWeighing w;
   const EffortStats& all = gathers_[k];
-  // The models' seconds per sample from the first passes only, where each took every gather
+  // The models' work per sample from the first passes only, where each took every gather
   // once in whole batches: a controlled pass takes the image's model in the small batches
   // roulette leaves, at a higher cost per sample that the others, not taken, never show.
   const EffortStats& pilot = uncontrolled_[k];
@@ -206,26 +192,26 @@ EffortPrice::ModelWeighing EffortPrice::WeighModels(int k) const {
     return w;
   // Per pixel and pass, what a model changes against the rule were every sample below the
   // accurate tier taken with it: the variance it adds (estimated from the rule's samples) and
-  // its seconds over the rule's; and its share of those samples in the measured passes.
+  // its work over the rule's; and its share of those samples in the measured passes.
   const double samples = switchable / (p.count * double(pixels_));
-  const double rule_seconds = pilot.rule_seconds / (pilot.rule_samples - pilot.mixture_measured);
-  auto change = [&](ModelChange& c, double excess, double measured, double taken, double seconds, double share) {
+  const double rule_work = pilot.rule_work / (pilot.rule_samples - pilot.mixture_measured);
+  auto change = [&](ModelChange& c, double excess, double measured, double taken, double work, double share) {
     if (!(measured > 0 && taken > 0)) return;
-    c.dv = samples * excess / measured, c.dt = samples * (seconds / taken - rule_seconds), c.share = share, c.known = true;
+    c.dv = samples * excess / measured, c.dt = samples * (work / taken - rule_work), c.share = share, c.known = true;
   };
-  change(w.cheapest, all.cheapest_excess, all.rule_samples, pilot.cheapest_samples, pilot.cheapest_seconds,
+  change(w.cheapest, all.cheapest_excess, all.rule_samples, pilot.cheapest_samples, pilot.cheapest_work,
          p.cheapest[k] / switchable);
-  change(w.mixture, all.mixture_excess, all.mixture_measured, pilot.mixture_samples, pilot.mixture_seconds,
+  change(w.mixture, all.mixture_excess, all.mixture_measured, pilot.mixture_samples, pilot.mixture_work,
          p.mixture[k] / switchable);
   // The accurate model's variance from the pairs' image (of the medium gathers only; in the
-  // first priced refresh only), its seconds from the pairs' own. The pairs' image is against
+  // first priced refresh only), its work from the pairs' own. The pairs' image is against
   // the first pass's, whose pilots took the cheapest model and the mixture: the accurate
   // model's change against the rule adds theirs.
   if (k == static_cast<int>(GatherKind::Medium) && passes_ == kMinPasses && !std::isnan(accurate_change_) &&
       all.accurate_samples > 0)
     w.accurate = {vrlis::EffortModel::Accurate,
                   accurate_change_ + w.cheapest.share * w.cheapest.dv + w.mixture.share * w.mixture.dv,
-                  samples * (all.accurate_seconds / all.accurate_samples - rule_seconds), 0, true};
+                  samples * (all.accurate_work / all.accurate_samples - rule_work), 0, true};
   // The measured variance and cost are of a mix, each model's share of the samples with its
   // change and the rest with the rule's: the states compared whole, not to first order (one
   // model for the whole image is no small change).
@@ -261,18 +247,18 @@ bool EffortPrice::DecisionsPay(int k) const {
   const double decided_pixels = passes_of_[1].decided[k];  // the pixels in decided_
   if (!(decided_pixels > 0 && variance_ > 0 && pixel_cost_ > 0)) return true;
   // Per pixel that decided, the variance its decisions added (negative: removed) and their
-  // seconds against the same VRLs each taken once: the time outside sampling less the
+  // work against the same VRLs each taken once: the work outside sampling less the
   // undecided calls' per VRL (0 before any: it then overstates the decisions' cost until the
-  // first undecided pass), and the samples' over one per VRL at the seconds of a sample (of
+  // first undecided pass), and the samples' over one per VRL at the work of a sample (of
   // the first pass's while none was decided); over the image, times the share of pixels
   // that gather.
-  const EffortStats& timed = d.gathers > 0 ? d : uncontrolled_[k];
-  const double sample_cost = timed.gathers > 0 ? timed.sample_seconds / double(timed.gathers) : 0;
-  const double loop = once.vrls > 0 ? (once.seconds - once.sample_seconds) / once.vrls : 0;
-  const double seconds = (d.seconds - d.sample_seconds) - d.vrls * loop + (double(d.gathers) - d.vrls) * sample_cost;
+  const EffortStats& counted = d.gathers > 0 ? d : uncontrolled_[k];
+  const double sample_cost = counted.gathers > 0 ? counted.sample_work / double(counted.gathers) : 0;
+  const double loop = once.vrls > 0 ? (once.work - once.sample_work) / once.vrls : 0;
+  const double work = (d.work - d.sample_work) - d.vrls * loop + (double(d.gathers) - d.vrls) * sample_cost;
   const Passes& p = measured();
   const double scale = p.called[k] / (p.count * double(pixels_)) / decided_pixels;
-  const double dv = scale * (d.roulette_excess + within(GatherKind(k)) * d.split_excess), dt = scale * seconds;
+  const double dv = scale * (d.roulette_excess + within(GatherKind(k)) * d.split_excess), dt = scale * work;
   // The measured variance and cost are of a mixture, the decided share of the pixels with
   // the decisions' change, the rest without: the two states' products compared whole, not
   // to first order (turning the decisions off is no small change).
@@ -287,7 +273,7 @@ double EffortPrice::CallDemand(int kind, std::size_t t) const {
   const EffortStats& tile = tiles_[kind][t];
   const EffortStats& all = gathers_[kind];
   // A taken call's decisions: their time is what a call not taken saves.
-  auto decisions = [](const EffortStats& s) { return (s.seconds - s.sample_seconds) / s.call_rate; };
+  auto decisions = [](const EffortStats& s) { return (s.work - s.sample_work) / s.call_rate; };
   constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy
   const double cost = tile.call_rate >= kFewCalls ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
   if (!(value_of_time() > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;

@@ -1,12 +1,12 @@
 #include "vrlis_integration/gather.hpp"
 
-#include <chrono>
-
 #include <vrlis/core/two_point_direction.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
 #include <vrlis/gather/medium_gather.hpp>
 #include <vrlis/gather/point_light_gather.hpp>
 #include <vrlis/samplers/equiangular.hpp>
+
+#include "vrlis_integration/work.hpp"
 
 namespace vrlis::integration {
 
@@ -22,7 +22,7 @@ vrlis::VrlSegment<float> SegmentOf(const Vrl& vrl) { return {vrl.origin, vrl.dir
 // The library's weight models the connection's transmittance in a medium that fills it;
 // a bounded medium may not, and then the scene's own transmittance replaces it.
 float Connect(const Scene& scene, Vec3f a, Vec3f b, float weight, float transmittance) {
-  if (!(weight > 0) || scene.geometry->Occluded(a, b)) return 0;
+  if (!(weight > 0) || scene.Occluded(a, b)) return 0;
   if (!scene.medium.Bounded()) return weight;
   return weight * (scene.Transmittance(a, b) / transmittance);
 }
@@ -71,7 +71,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
   vrlis::EffortTally tally, pair_tally;
   EffortStats taken;
   Spectrum pair_sum;
-  double pair_seconds = 0;
+  double pair_work = 0, connect_work = 0;  // the pair's, and the occlusion rays of the call's samples
   for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
@@ -100,14 +100,21 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (split) ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     Rng same = own;
-    gather_chunk(effort, own, segments, weights, n, connect, stats ? &tally : nullptr);
+    {
+      WorkScope scope(&connect_work);  // the library counts its own work in the tally
+      gather_chunk(effort, own, segments, weights, n, connect, stats ? &tally : nullptr);
+    }
     if (pair) {
       auto measure = [&](int i, const vrlis::GatherSample<float>& s, float) {
         pair_sum += chunk[i].flux * (Connect(scene, s) * share(s));
       };
-      const auto start = std::chrono::steady_clock::now();
-      gather_chunk(*pair, same, segments, weights, n, measure, &pair_tally);
-      pair_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      double pair_rays = 0;
+      {
+        WorkScope scope(&pair_rays);
+        gather_chunk(*pair, same, segments, weights, n, measure, &pair_tally);
+      }
+      ThreadWork() -= pair_rays;  // for the statistics alone: not the pixel's work
+      pair_work += pair_rays;
     }
     for (int i = 0; split && i < n; ++i)
       if (samples[i] > 1) {
@@ -116,27 +123,26 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
         taken.split_second += sum_y2[i] / k;
       }
   }
+  ThreadWork() += tally.work;
   if (stats) {
     taken.predicted = tally.predicted;
-    taken.sample_seconds = tally.sample_seconds;
+    taken.sample_work = tally.sample_work + connect_work;
     constexpr int kRule = static_cast<int>(vrlis::EffortModel::Chosen);
     constexpr int kCheapest = static_cast<int>(vrlis::EffortModel::Cheapest);
     constexpr int kMixture = static_cast<int>(vrlis::EffortModel::Mixture);
     taken.rule_samples = double(tally.model_samples[kRule]);
-    if (!effort.measure_mixture) taken.rule_seconds = tally.model_seconds[kRule];  // the measuring's not the rule's
+    if (!effort.measure_mixture) taken.rule_work = tally.model_work[kRule];  // the measuring's not the rule's
     taken.cheapest_samples = double(tally.model_samples[kCheapest]);
-    taken.cheapest_seconds = tally.model_seconds[kCheapest];
+    taken.cheapest_work = tally.model_work[kCheapest];
     taken.mixture_samples = double(tally.model_samples[kMixture]);
-    taken.mixture_seconds = tally.model_seconds[kMixture];
+    taken.mixture_work = tally.model_work[kMixture];
     if (effort.measure_mixture) taken.mixture_measured = taken.rule_samples;
     if (pair) {
       constexpr int kAccurate = static_cast<int>(vrlis::EffortModel::Accurate);
       taken.accurate_samples = double(pair_tally.model_samples[kAccurate]);
-      taken.accurate_seconds = pair_tally.model_seconds[kAccurate];
+      taken.accurate_work = pair_tally.model_work[kAccurate];
       taken.pair_delta = throughput * (pair_sum + sum * -1.f);
-      // The caller times the whole call, the pair's measuring too: that is not the call's.
-      taken.pair_seconds = pair_seconds;
-      taken.seconds = -pair_seconds;
+      taken.pair_work = pair_work + pair_tally.work;
     }
     *stats += taken;
   }

@@ -13,6 +13,7 @@
 #include "vrlis_integration/camera_paths.hpp"
 #include "vrlis_integration/light_paths.hpp"
 #include "vrlis_integration/path_tracer.hpp"
+#include "vrlis_integration/work.hpp"
 
 namespace vrlis::integration {
 namespace {
@@ -62,8 +63,9 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
                                       : std::vector<Vrl>{};
   const VplSet vpls(std::move(traced));
   std::atomic<std::uint64_t> gathers{0};
-  // What the price learns from this pass, with the effort control on only.
-  std::atomic<std::uint64_t> pixel_ns{0};
+  // Each pixel's counted work (work.hpp), summed in pixel order after the pass: what the price
+  // learns from, with the effort control on.
+  std::vector<double> pixel_work(static_cast<std::size_t>(settings_.width) * settings_.height);
   const vrlis::EffortSettings& effort = settings_.transport.effort;
   EffortPrice::PixelStats* learned = effort.on ? &price_.BeginPass() : nullptr;
   vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
@@ -82,8 +84,13 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     GatherCount count;
     if (scored) count.marginal_scores = &pass_scores.local();
+    const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
     if (!effort.on) {
-      Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort);
+      Spectrum L;
+      {
+        WorkScope scope(&pixel_work[i]);
+        L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort);
+      }
       gathers.fetch_add(count.Total(), std::memory_order_relaxed);
       return L;
     }
@@ -101,12 +108,11 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
     const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path
     const double rate = demand > 1 ? std::min(demand, std::max(1.0, effort.ceiling)) : 1.0;
-    m.timed = s.timed = price_.timed(choice.Uniform());
     // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
     // gather their VRLs under the accurate model, for the statistics alone
     // (docs/maths.md#effort-accurate); the pairing's stream is drawn only where it can pair.
     const bool paired =
-        pairs_models && m.timed && price_.pairs() &&
+        pairs_models && price_.pairs() &&
         price_.pair(Rng(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + (x - x % 2), StreamPurpose::EffortPair)
                         .Uniform());
     vrlis::EffortSettings pair;
@@ -115,21 +121,23 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
       pair.decide = pair.measure_mixture = false;
       pair.model = vrlis::EffortModel::Accurate;
     }
-    const auto p0 = m.timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    Spectrum L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
-    const double pixel_seconds = m.timed ? Since(p0) - count.medium_effort.pair_seconds : 0;
-    if (m.timed) pixel_ns.fetch_add(static_cast<std::uint64_t>(1e9 * std::max(0.0, pixel_seconds)), std::memory_order_relaxed);
+    Spectrum L;
+    {
+      WorkScope scope(&pixel_work[i]);  // from zero, so the pixel's own (not its thread's)
+      L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
+    }
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
-    const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
     count.medium_effort.pair_pixel = paired ? 1 : 0;
     learned->medium[i] = count.medium_effort;
     learned->surface[i] = count.surface_effort;
     learned->remainder[i] = count.remainder;
     return L;
   });
-  if (effort.on) price_.Add(film, 1e-9 * double(pixel_ns.load()));
+  double work = 0;
+  for (double w : pixel_work) work += w;
+  if (effort.on) price_.Add(film, work);
   for (const vrlis::ScoreOctaves& s : pass_scores) marginal_scores_ += s;
-  if (stats) *stats = {vrls.size(), gathers.load(), Since(t0)};
+  if (stats) *stats = {vrls.size(), gathers.load(), Since(t0), work};
   return film;
 }
 

@@ -1,4 +1,4 @@
-// Hypotheses: the effort control (vrlis/gather/effort.hpp, gather_vrls.hpp) keeps the gather
+// Hypotheses: the effort control (vrlis/effort/, vrlis/gather/gather_vrls.hpp) keeps the gather
 // unbiased and its weights finite, and its decisions follow the price.
 // - Roulette (every q < 1) and splitting (every q > 1) give the mean of the gather without
 //   the control, within 4 standard errors; the same runs with the 1 / q weight left out

@@ -1,4 +1,4 @@
-// The effort control in the renderer (vrlis/gather/effort.hpp, effort_price.hpp):
+// The effort control in the renderer (vrlis/effort/policy.hpp, effort_price.hpp):
 // - a pass's decisions are a function of the price learned from the passes before it (with
 //   the scene's sampler and with auto): pass 3 rendered by a fresh renderer given that price
 //   equals the original's pass 3 bit for bit,
@@ -29,9 +29,6 @@
 // - the gathers are decided one by one where that pays and taken once where it does not: in
 //   room (decisions skip almost every gather), not in the bidirectional scene at g = 0 with
 //   equiangular sampling (bounds that cost more than the gathers, for little variance);
-// - timing an eighth of the pixels prices as timing them all: on synthetic passes whose
-//   seconds the price sets against the first pass's, the two prices agree within 10%; the
-//   eighth without its weight 8 is rejected;
 // - the controlled image's mean is the uncontrolled one's: per 8 x 8 block of the
 //   bidirectional scene (where roulette and splitting act most), of room (where whole calls
 //   are rouletted) and of the cube (where the remainder is split), z-scores within a
@@ -122,7 +119,7 @@ TEST_CASE("a pass's effort decisions come from the passes before it", "[render][
   CHECK_FALSE(Same(fresh.RenderPass(1, 3, nullptr), original));
 }
 
-TEST_CASE("effort: gathers without variance fall to the floor, a scene of gathers keeps them", "[render][effort][timing]") {
+TEST_CASE("effort: gathers without variance fall to the floor, a scene of gathers keeps them", "[render][effort]") {
   auto gathers = [](const char* scene, int pass) {
     auto built = EffortScene(scene);
     REQUIRE(built);
@@ -138,7 +135,7 @@ TEST_CASE("effort: gathers without variance fall to the floor, a scene of gather
   CHECK(bidirectional >= 1);
 }
 
-TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort][timing]") {
+TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
     return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
                                     const vrlis::integration::RenderSettings& s, int x, int y) {
@@ -203,7 +200,7 @@ TEST_CASE("effort: a split remainder keeps its mean and learns its second moment
   vrlis::integration::RemainderStats stats;
   vrlis::RunningMoments kept, sabotaged;
   for (int k = 0; k < 40000; ++k) {
-    const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, true, [&] {
+    const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, [&] {
       return vrlis::integration::Spectrum(rng.Uniform());
     }).Average();
     kept.add(y);
@@ -218,7 +215,7 @@ TEST_CASE("effort: a split remainder keeps its mean and learns its second moment
   if (rate != 1) CHECK(std::abs(z(sabotaged, 0.5)) > 4);
 }
 
-TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort][timing]") {
+TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
     return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
                                     const vrlis::integration::RenderSettings&, int x, int y) {
@@ -227,18 +224,14 @@ TEST_CASE("effort: the remainder is split where its paths hold the noise, never 
   };
   const double corner = mean_rate("corner"), room = mean_rate("room");
   INFO("mean remainder demand after 5 passes: corner " << corner << ", room " << room);
-  // Both demands scale with measured seconds, which a loaded machine skews (room's rose from
-  // 0.7-0.8 alone to 1.45 under a parallel ctest); their ratio, measured 10-19 alone and
-  // loaded, is where each scene's noise is.
   CHECK(corner > 2);           // its remainder holds most of the variance at a few percent of the time
   CHECK(room < corner / 4);    // its remainder holds almost none
 }
 
 TEST_CASE("effort: auto weighs the models by the variance each adds or removes", "[render][effort]") {
   // What the first price weighs the image's model by, from the first pass: its variances are
-  // the image's and the samples', which the seed fixes, and are checked here; its seconds are
-  // the clock's, which a loaded machine skews several-fold at these sizes, so the choice they
-  // make with them is the synthetic test's (below).
+  // the image's and the samples', which the seed fixes, and are checked here; its work is
+  // counted, and the choice it makes with them is the synthetic test's (below).
   using Weighing = vrlis::integration::EffortPrice::ModelWeighing;
   auto weigh = [](const char* scene, float g, int size, bool fixed_lattice) {
     vrlis::scenes::MediumOverrides medium;
@@ -320,7 +313,7 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
     CHECK(std::memcmp(&alone, &with_pair, sizeof(Spectrum)) == 0);
     CHECK(a.Uniform() == b.Uniform());
     CHECK(paired.accurate_samples > 0);
-    CHECK(paired.pair_seconds > 0);
+    CHECK(paired.pair_work > 0);
     const Spectrum measured = throughput * with_pair + paired.pair_delta, expected = throughput * instead;
     INFO("pixel " << pixel << ": accurate " << expected.r << ", rule + delta " << measured.r);
     CHECK(measured.r == Approx(expected.r).epsilon(1e-4).margin(1e-9));
@@ -330,33 +323,33 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
 }
 
 // Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (variance V = 0.04 / 3 over the
-// four passes after the first) at 5 us a pixel, each pixel taking 10 samples of the rule, at
-// 400 ns in the odd pixels and measuring the mixture's added variance, `excess` a pixel, in the
-// even ones; the first pass's pixel 1 also takes 10 samples of the mixture at 200 ns. Per pixel, the mixture
-// changes V by `excess` and T by -2 us: whole, it pays below 2 V / 3 = 0.0089; to first order
+// four passes after the first) at 5000 work units a pixel, each pixel taking 10 samples of the
+// rule, at 400 in the odd pixels and measuring the mixture's added variance, `excess` a pixel,
+// in the even ones; the first pass's pixel 1 also takes 10 samples of the mixture at 200. Per pixel, the mixture
+// changes V by `excess` and T by -2000: whole, it pays below 2 V / 3 = 0.0089; to first order
 // (excess / V < 2 / 5) only below 0.0053.
 TEST_CASE("effort: the price takes the model whose variance x time is least", "[render][effort]") {
   using vrlis::EffortModel;
   using vrlis::integration::EffortStats;
   auto model = [](double excess) {
     constexpr int kSide = 8;
-    vrlis::integration::EffortPrice price(kSide, kSide, 1.0);  // every pixel timed
+    vrlis::integration::EffortPrice price(kSide, kSide);
     for (int pass = 0; pass < 5; ++pass) {
       auto& pixels = price.BeginPass();
       for (std::size_t i = 0; i < pixels.medium.size(); ++i) {
         EffortStats p;
-        p.calls = 1, p.gathers = 10, p.seconds = 5e-6, p.predicted = p.measured = 1;  // priced from the second pass
+        p.calls = 1, p.gathers = 10, p.work = 5e3, p.predicted = p.measured = 1;  // priced from the second pass
         p.rule_samples = 10;
-        if (i % 2) p.rule_seconds = 10 * 400e-9;
+        if (i % 2) p.rule_work = 10 * 400.0;
         else p.mixture_measured = 10, p.mixture_excess = excess;
-        if (pass == 0 && i == 1) p.gathers += 10, p.mixture_samples = 10, p.mixture_seconds = 10 * 200e-9;
+        if (pass == 0 && i == 1) p.gathers += 10, p.mixture_samples = 10, p.mixture_work = 10 * 200.0;
         pixels.medium[i] = p;
         pixels.surface[i] = {};
         pixels.remainder[i] = {};
       }
       vrlis::integration::Film film(kSide, kSide);
       for (auto& v : film.pixels) v = vrlis::integration::Spectrum(pass % 2 ? 0.9f : 1.1f);
-      price.Add(film, kSide * kSide * 5e-6);
+      price.Add(film, kSide * kSide * 5e3);
     }
     return price.model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
   };
@@ -365,20 +358,20 @@ TEST_CASE("effort: the price takes the model whose variance x time is least", "[
   CHECK(model(0.02) == EffortModel::Chosen);
 }
 
-// Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (neighbours' variance 0.02) at 5 us
-// a pixel, each pixel taking 10 samples of the rule at 400 ns; the first pass pairs them with
+// Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (neighbours' variance 0.02) at 5000
+// a pixel, each pixel taking 10 samples of the rule at 400; the first pass pairs them with
 // the accurate model, whose pixels would have been 1 +- 0.1 x `spread` (variance 0.02 x
-// spread^2) at `seconds` a sample. With a change of the model worth kAccurateMargin, the
-// accurate model pays where 0.02 spread^2 (5 us + 10 (seconds - 400 ns)) < 0.8 x 0.02 x 5 us,
+// spread^2) at `work` a sample. With a change of the model worth kAccurateMargin, the
+// accurate model pays where 0.02 spread^2 (5000 + 10 (work - 400)) < 0.8 x 0.02 x 5000,
 // and it is decided at the first price only.
 TEST_CASE("effort: the accurate model is taken where its pairs' image is worth the time, once",
           "[render][effort]") {
   using vrlis::EffortModel;
   using vrlis::integration::EffortStats;
   using vrlis::integration::Spectrum;
-  auto model = [](double spread, double seconds, int passes, bool paired) {
+  auto model = [](double spread, double work, int passes, bool paired) {
     constexpr int kSide = 8;
-    vrlis::integration::EffortPrice price(kSide, kSide, 1.0);  // every pixel timed
+    vrlis::integration::EffortPrice price(kSide, kSide);
     for (int pass = 0; pass < passes; ++pass) {
       auto& pixels = price.BeginPass();
       vrlis::integration::Film film(kSide, kSide);
@@ -386,28 +379,28 @@ TEST_CASE("effort: the accurate model is taken where its pairs' image is worth t
         const float value = i % 2 ? 0.9f : 1.1f;
         film.pixels[i] = Spectrum(value);
         EffortStats p;
-        p.calls = 1, p.gathers = 10, p.seconds = 5e-6, p.predicted = p.measured = 1;
-        p.rule_samples = 10, p.rule_seconds = 10 * 400e-9;
+        p.calls = 1, p.gathers = 10, p.work = 5e3, p.predicted = p.measured = 1;
+        p.rule_samples = 10, p.rule_work = 10 * 400.0;
         if (pass == 0 && paired) {
-          p.accurate_samples = 10, p.accurate_seconds = 10 * seconds, p.pair_seconds = 1e-6, p.pair_pixel = 1;
+          p.accurate_samples = 10, p.accurate_work = 10 * work, p.pair_work = 1e3, p.pair_pixel = 1;
           p.pair_delta = Spectrum(static_cast<float>((value - 1) * (spread - 1)));
         }
         pixels.medium[i] = p;
         pixels.surface[i] = {};
         pixels.remainder[i] = {};
       }
-      price.Add(film, kSide * kSide * 5e-6);
+      price.Add(film, kSide * kSide * 5e3);
     }
     return price.model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
   };
-  CHECK(model(0.3, 2e-6, 1, true) == EffortModel::Accurate);   // V / 11 at 4.2 times T
-  CHECK(model(0.3, 6e-6, 1, true) == EffortModel::Chosen);     // V / 11 at 12 times T
-  CHECK(model(0.9, 5e-7, 1, true) == EffortModel::Chosen);     // V x 0.81 at 1.2 times T: within the margin
-  CHECK(model(0.3, 2e-6, 1, false) == EffortModel::Chosen);    // no pairs, no measure of it
-  CHECK(model(0.3, 2e-6, 6, true) == EffortModel::Accurate);   // kept in the passes after
+  CHECK(model(0.3, 2e3, 1, true) == EffortModel::Accurate);   // V / 11 at 4.2 times T
+  CHECK(model(0.3, 6e3, 1, true) == EffortModel::Chosen);     // V / 11 at 12 times T
+  CHECK(model(0.9, 5e2, 1, true) == EffortModel::Chosen);     // V x 0.81 at 1.2 times T: within the margin
+  CHECK(model(0.3, 2e3, 1, false) == EffortModel::Chosen);    // no pairs, no measure of it
+  CHECK(model(0.3, 2e3, 6, true) == EffortModel::Accurate);   // kept in the passes after
 }
 
-TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort][timing]") {
+TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort]") {
   auto decide = [](const char* scene, float g, const char* sampler) {
     vrlis::scenes::MediumOverrides medium;
     medium.g = g;
@@ -421,41 +414,4 @@ TEST_CASE("effort: gathers are decided one by one only where the decisions pay",
   };
   CHECK(decide("room", 0.5f, "equiangular"));
   CHECK_FALSE(decide("bidirectional", 0.f, "equiangular"));
-}
-
-TEST_CASE("effort: timing a share of the pixels prices as timing them all", "[render][effort]") {
-  // Pixels of random cost whose gathers take all of it, no sampling seconds: the price is the
-  // later passes' pixel cost over the first pass's gather cost, so a later pass's seconds
-  // must keep their sum whichever share of the pixels measured them.
-  constexpr int kSide = 64;
-  using vrlis::integration::EffortPrice;
-  EffortPrice all(kSide, kSide, 1.0), share(kSide, kSide, EffortPrice::kTimed), unweighted(kSide, kSide, 1.0);
-  vrlis::integration::Rng rng(3, 0, 0, vrlis::integration::StreamPurpose::Camera);
-  for (int pass = 0; pass < 6; ++pass) {
-    double seconds[3] = {0, 0, 0};
-    EffortPrice::PixelStats* pixels[3] = {&all.BeginPass(), &share.BeginPass(), &unweighted.BeginPass()};
-    for (std::size_t i = 0; i < pixels[0]->medium.size(); ++i) {
-      vrlis::integration::EffortStats p;
-      p.calls = 1, p.gathers = 10, p.predicted = p.measured = 1;
-      const double cost = 5e-6 * (0.5 + rng.Uniform());
-      const bool timed = share.timed(rng.Uniform());  // the same pixels for the share and its sabotage
-      for (int k = 0; k < 3; ++k) {
-        vrlis::integration::EffortStats q = p;
-        q.seconds = k == 0 || timed ? cost : 0;
-        seconds[k] += q.seconds;
-        pixels[k]->medium[i] = q;
-        pixels[k]->surface[i] = {};
-        pixels[k]->remainder[i] = {};
-      }
-    }
-    vrlis::integration::Film film(kSide, kSide);
-    for (auto& v : film.pixels) v = vrlis::integration::Spectrum(0.9f + 0.2f * rng.Uniform());
-    all.Add(film, seconds[0]), share.Add(film, seconds[1]), unweighted.Add(film, seconds[2]);
-  }
-  auto price = [](const EffortPrice& p) { return p.price(vrlis::integration::GatherKind::Medium); };
-  INFO("price: every pixel timed " << price(all) << ", an eighth " << price(share) << ", unweighted "
-                                   << price(unweighted));
-  REQUIRE(price(all) > 0);
-  CHECK(std::abs(price(share) / price(all) - 1) < 0.1);
-  CHECK_FALSE(std::abs(price(unweighted) / price(all) - 1) < 0.1);
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Every VRL against one camera segment, or one surface point, in one call: the query's
 // shared parts validated and the samplers chosen once, the effort decision per VRL
-// (effort.hpp), the gathers run in batches by SampleMediumGathers / SampleSurfaceGathers,
+// (effort/policy.hpp), the gathers run in batches by SampleMediumGathers / SampleSurfaceGathers,
 // and each sample handed to the renderer, which traces its occlusion ray:
 //
 //   vrlis::GatherMediumVrls(method, effort, camera, medium, vrls, weights, n, uniform,
@@ -19,13 +19,14 @@
 // the call may first draw one for whether it is taken (EffortCallRate), and each VRL one for
 // its number of samples.
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <type_traits>
 #include <vector>
 
-#include "effort.hpp"
+#include "../effort/marginal_fits.hpp"
+#include "../effort/policy.hpp"
+#include "../effort/work.hpp"
 #include "medium_gather.hpp"
 #include "surface_gather.hpp"
 
@@ -44,21 +45,29 @@ struct GatherBatch {
   int count = 0;
 };
 
+// The work of a call's decisions per VRL (work.hpp): its quick and its tight bound.
+struct BoundWork {
+  double quick, tight;
+};
+
 // The loop shared by both gathers: bounds(first, n, quick, tight) writes, for VRLs
 // [first, first + n) (n <= kBoundBatch), a cheap bound of each one's unweighted mean into
-// quick and a tighter one into tight, each if set (effort.hpp, in vector lanes); the quick one
+// quick and a tighter one into tight, each if set (bounds.hpp, in vector lanes); the quick one
 // decides alone where it already puts q at the floor (the tighter bound would too), and a
 // block's tight ones are taken once one of its VRLs needs them. gather(model, batch, samples)
 // samples a batch with the EffortModel's samplers (always Chosen unless kPolicy), one batch
-// per model. A batch is run when full; with the gathers undecided (the control off, or
-// EffortSettings::decide false) also after every kSize VRLs, so that the batches are those of
-// one gather per VRL (decided, the few samples roulette leaves would each pay a whole batch).
+// per model, and returns its counted work. A batch is run when full; with the gathers
+// undecided (the control off, or EffortSettings::decide false) also after every kSize VRLs,
+// so that the batches are those of one gather per VRL (decided, the few samples roulette
+// leaves would each pay a whole batch). The tally, if set, counts the work of the loop, the
+// bounds and the batches.
 template <int kUniforms, bool kPolicy, typename Real, typename Uniform, typename Bounds, typename Gather,
           typename Connect>
 void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights,
-                   int count, bool valid, Uniform& uniform, Bounds&& bounds, Gather&& gather, Connect& connect,
-                   EffortTally* tally) {
+                   int count, bool valid, Uniform& uniform, BoundWork bound_work, Bounds&& bounds, Gather&& gather,
+                   Connect& connect, EffortTally* tally) {
   const double rate = EffortCallRate(effort);
+  if (tally) tally->work += work_costs::kVrl;  // a call not taken still draws its number
   if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
   using Batch = GatherBatch<Real, kUniforms>;
   // By EffortModel, each built when first used (they are zeroed, and a call uses one or two).
@@ -68,18 +77,16 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     if (!batch) batch.emplace();
     return *batch;
   };
-  const bool timed = tally && effort.timed;
   GatherSample<Real> samples[Batch::kSize];  // once per call: every batch overwrites them
   auto run = [&](EffortModel model) {
-    const auto start = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     Batch& batch = *batches[static_cast<int>(model)];
-    gather(model, batch, samples);
+    const double work = gather(model, batch, samples);
     for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
-    if (tally) tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
-    if (timed) {
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      tally->sample_seconds += seconds;
-      tally->model_seconds[static_cast<int>(model)] += seconds;
+    if (tally) {
+      tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
+      tally->model_work[static_cast<int>(model)] += work;
+      tally->sample_work += work;
+      tally->work += work;
     }
     batch.count = 0;
   };
@@ -88,16 +95,23 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   const bool decide = effort.on && effort.decide;
   EffortModel model = EffortModel::Chosen;  // the call's, unless decided per gather
   if constexpr (kPolicy) model = ChooseEffortModel(effort, 1);
+  double loop_work = count * work_costs::kVrl;
   for (int i = 0; i < count; ++i) {
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
     const int lane = i % kBoundBatch, first = i - lane, block = std::min(kBoundBatch, count - first);
-    if (decide && lane == 0) bounds(first, block, quick, nullptr), tight_taken = false;
+    if (decide && lane == 0) {
+      bounds(first, block, quick, nullptr), tight_taken = false;
+      loop_work += block * bound_work.quick;
+    }
     int n = 1;
     Real weight = 1;
     if (decide) {
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
-        if (!tight_taken) bounds(first, block, nullptr, tight), tight_taken = true;
+        if (!tight_taken) {
+          bounds(first, block, nullptr, tight), tight_taken = true;
+          loop_work += block * bound_work.tight;
+        }
         if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(tight[lane])) : 0;
         return m2;
       };
@@ -124,6 +138,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   }
   for (int m = 0; m < (kPolicy ? kEffortModels : 1); ++m)
     if (batches[m] && batches[m]->count > 0) run(EffortModel(m));
+  if (tally) tally->work += loop_work;
 }
 
 }  // namespace detail
@@ -146,8 +161,8 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
-// tally, if set, adds the predictions (decided gathers only) and, in a timed call
-// (EffortSettings::timed), the seconds of sampling; marginal_scores, if set and VrlMarginal
+// tally, if set, adds the predictions (decided gathers only) and the call's counted work;
+// marginal_scores, if set and VrlMarginal
 // is step one, the gathers' MarginalFitScores.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
@@ -177,10 +192,12 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
         heap_bound.resize(std::size_t(count)), bound = heap_bound.data();
       }
       detail::WithWidestLanes([&] { MarginalFitScores(camera, medium, vrls, weights, count, bound, score); });
+      if (tally) tally->work += count * work_costs::kMediumTightBound;
       for (int i = 0; marginal_scores && i < count; ++i) marginal_scores->Add(score[i]);
     }
     detail::GatherEachVrl<2, policy>(
         effort, vrls, weights, count, valid, uniform,
+        detail::BoundWork{work_costs::kMediumQuickBound, work_costs::kMediumTightBound},
         [&](int first, int n, Real* quick, Real* tight) {
           if (scored && tight) {  // taken with the scores
             std::copy(bound + first, bound + first + n, tight);
@@ -189,24 +206,32 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
           if (quick || tight) MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
+          const SegmentChoice taken = SegmentSamplerFor(method.segment, model);
+          // Its counted work: each sample's, VrlMarginal's fit where it takes one.
           auto with = [&](auto one, auto two, const bool* fitted = nullptr) {
-            SampleMediumGathers<typename decltype(one)::type, typename decltype(two)::type>(
-                ValidQuery{}, camera, medium, b.segments, b.count, b.u[0], b.u[1], samples, effort.measure_mixture,
-                true, fitted);
+            using One = typename decltype(one)::type;
+            SampleMediumGathers<One, typename decltype(two)::type>(ValidQuery{}, camera, medium, b.segments, b.count,
+                                                                  b.u[0], b.u[1], samples, effort.measure_mixture,
+                                                                  true, fitted);
+            int fits = 0;
+            if constexpr (std::is_same_v<One, VrlMarginalEntry::Sampler<Real>>)
+              for (int k = 0; k < b.count; ++k) fits += !fitted || fitted[k];
+            return b.count * (MediumSampleWork(taken) + (effort.measure_mixture ? work_costs::kMixtureDensity : 0)) +
+                   fits * MarginalFitWork();
           };
           // A model in place of auto's rule: its segment sampler, after VrlMarginal for the
           // accurate one and VrlPoint for the others.
           if constexpr (policy) {
             if (model != EffortModel::Chosen)
-              return SegmentSamplers::WithEntry(SegmentSamplerFor(method.segment, model), [&](auto taken) {
-                using Two = Type<typename decltype(taken)::template Sampler<Real>>;
+              return SegmentSamplers::WithEntry(taken, [&](auto entry) {
+                using Two = Type<typename decltype(entry)::template Sampler<Real>>;
                 if (model == EffortModel::Accurate) return with(Type<VrlMarginalEntry::Sampler<Real>>{}, Two{});
-                with(Type<VrlPointEntry::Sampler<Real>>{}, Two{});
+                return with(Type<VrlPointEntry::Sampler<Real>>{}, Two{});
               });
           }
           bool fitted[std::decay_t<decltype(b)>::kSize];
           for (int k = 0; chosen && k < b.count; ++k) fitted[k] = score[b.source[k]] >= effort.marginal_threshold;
-          with(Type<VrlSampler>{}, Type<StepTwo>{}, chosen ? fitted : nullptr);
+          return with(Type<VrlSampler>{}, Type<StepTwo>{}, chosen ? fitted : nullptr);
         },
         connect, tally);
   });
@@ -224,21 +249,24 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
     constexpr bool policy = std::is_same_v<Sampler, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<1, policy>(
         effort, vrls, weights, count, valid, uniform,
+        detail::BoundWork{work_costs::kSurfaceQuickBound, work_costs::kSurfaceTightBound},
         [&](int first, int n, Real* quick, Real* tight) {
           SurfaceGatherBounds(point, normal, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
+          const SegmentChoice taken = SegmentSamplerFor(method, model);
           auto with = [&](auto sampler) {
             SampleSurfaceGathers<typename decltype(sampler)::type>(ValidQuery{}, point, normal, medium, b.segments,
                                                                    b.count, b.u[0], samples, effort.measure_mixture);
+            return b.count * (SurfaceSampleWork(taken) + (effort.measure_mixture ? work_costs::kMixtureDensity : 0));
           };
           if constexpr (policy) {
             if (model != EffortModel::Chosen)
-              return SegmentSamplers::WithEntry(SegmentSamplerFor(method, model), [&](auto taken) {
-                with(Type<typename decltype(taken)::template Sampler<Real>>{});
+              return SegmentSamplers::WithEntry(taken, [&](auto entry) {
+                return with(Type<typename decltype(entry)::template Sampler<Real>>{});
               });
           }
-          with(Type<Sampler>{});
+          return with(Type<Sampler>{});
         },
         connect, tally);
   });

@@ -2,11 +2,11 @@
 // The camera pass of the VRL renderer: one camera path per pixel sample, following the
 // specular chain from the camera to its first diffuse or medium vertex, gathering every
 // VRL on the way (docs/renderer.md describes the decomposition).
-#include <chrono>
 #include <cstdint>
 #include <vector>
 
-#include <vrlis/gather/effort.hpp>
+#include <vrlis/effort/marginal_fits.hpp>
+#include <vrlis/effort/policy.hpp>
 #include <vrlis/method.hpp>
 
 #include "effort_price.hpp"
@@ -14,6 +14,7 @@
 #include "transport.hpp"
 #include "vpl.hpp"
 #include "vrl.hpp"
+#include "work.hpp"
 
 namespace vrlis::integration {
 
@@ -27,33 +28,14 @@ struct GatherCount {
   std::uint64_t Total() const { return medium_to_medium + medium_to_surface; }
 };
 
-namespace detail {
-// Adds the seconds of its scope to *seconds if on (what the effort control learns costs from).
-class Timer {
- public:
-  Timer(bool on, double* seconds) : seconds_(on ? seconds : nullptr) {
-    if (seconds_) start_ = std::chrono::steady_clock::now();
-  }
-  ~Timer() {
-    if (seconds_) *seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  Timer(const Timer&) = delete;
-  Timer& operator=(const Timer&) = delete;
-
- private:
-  double* seconds_;
-  std::chrono::steady_clock::time_point start_;
-};
-}  // namespace detail
-
 // The remainder's paths from one camera vertex: EffortSamples(rate) of them (one, and no
 // number drawn, at rate 1), each weighted 1 / rate, so the sum keeps its mean whatever the
 // rate; `stats`, if set, adds what the price learns from (docs/maths.md#effort-remainder),
-// its seconds only if `timed`. `path` returns one path's contribution.
+// its counted work included. `path` returns one path's contribution.
 template <typename Path>
-Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, bool timed, Path&& path) {
+Spectrum SplitRemainder(double rate, Rng& rng, RemainderStats* stats, Path&& path) {
   if (rate == 1 && !stats) return path();
-  detail::Timer timer(stats && timed, stats ? &stats->seconds : nullptr);
+  WorkScope scope(stats ? &stats->work : nullptr);
   const int n = rate == 1 ? 1 : vrlis::EffortSamples(rate, rng.Uniform());
   Spectrum sum;
   for (int i = 0; i < n; ++i) {

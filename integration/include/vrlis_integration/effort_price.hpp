@@ -3,7 +3,8 @@
 // from the passes already rendered: the variance of one pass's pixel estimate, averaged over
 // pixels with the largest thousandth left out (a few fireflies must not flip decisions; the
 // predicted second moments keep theirs, and more left out here overprices variance), and the
-// time a pixel and a gather cost; per pixel tile, what a whole call of gathers is worth. A
+// counted work a pixel and a gather cost (work.hpp); per pixel tile, what a whole call of
+// gathers is worth. A
 // pass's decisions read the price of the passes before it only: the renderer adds a pass
 // after rendering it.
 #include <algorithm>
@@ -11,24 +12,24 @@
 #include <limits>
 #include <vector>
 
-#include <vrlis/gather/effort.hpp>
+#include <vrlis/effort/policy.hpp>
 
 #include "film.hpp"
 
 namespace vrlis::integration {
 
-// What a pixel's gathers tell the price in a pass: the gathers taken, the seconds of the
-// calls that took them, the predicted second moments (vrlis::EffortTally) and the samples'
+// What a pixel's gathers tell the price in a pass (every "work" counted, work.hpp): the
+// gathers taken, the work of the calls that took them, the predicted second moments (vrlis::EffortTally) and the samples'
 // own estimate of them. Of the gathers split into several samples: the sum of their within
 // variances and of their second moments, each estimated from its own samples (the share
 // splitting reduces). Of the calls (vrlis::EffortCallRate): how many, the sum of their rates
 // and of rate x (contribution to the pixel)^2, an estimate of their second moments had each
-// been taken (docs/maths.md#effort-calls). Of the seconds, those spent sampling (the rest is
+// been taken (docs/maths.md#effort-calls). Of the work, that of sampling (the rest is
 // the decisions'). Of the samples `auto` took by its rule, the sum of (effort weight x
 // contribution)^2 x (GatherSample::over_equiangular - 1): an estimate of the variance the
 // pixel would gain had they been taken with equiangular sampling; the same with
 // over_mixture, of the rule's samples in calls that measured it (mixture_measured of them);
-// and the samples and sampling seconds of the rule (its seconds from the calls that did not
+// and the samples and sampling work of the rule (its work from the calls that did not
 // measure), the cheapest model and the mixture (docs/maths.md#effort-cheapest). Of
 // the calls: how many decided their gathers (vrlis::EffortSettings::decide) and the VRLs all of
 // them considered, taken or not. Of the decided gathers' samples (effort weight w, contribution
@@ -36,44 +37,44 @@ namespace vrlis::integration {
 // the variance the decisions add and remove against every gather taken once
 // (docs/maths.md#effort-decide). `measured` counts the decided calls' samples only, as
 // `predicted` does. Of the calls paired with a statistics-only call of the same VRLs under
-// the accurate model (GatherMediumToMedium's `pair`): that call's samples and their seconds,
-// its seconds (not the pixel's), and how much it would have changed the pixel's value
+// the accurate model (GatherMediumToMedium's `pair`): that call's samples and their work,
+// its work (not the pixel's), and how much it would have changed the pixel's value
 // (docs/maths.md#effort-accurate); of a pixel, whether the renderer paired its calls (1) or
 // not (0).
 struct EffortStats {
   std::uint64_t gathers = 0;
-  double seconds = 0, sample_seconds = 0, predicted = 0, measured = 0;
+  double work = 0, sample_work = 0, predicted = 0, measured = 0;
   double split_within = 0, split_second = 0;
   double calls = 0, call_rate = 0, call_m2 = 0;
   double decided = 0, vrls = 0, roulette_excess = 0, split_excess = 0;
   double cheapest_excess = 0, mixture_excess = 0, mixture_measured = 0;
-  double rule_samples = 0, rule_seconds = 0, cheapest_samples = 0, cheapest_seconds = 0;
-  double mixture_samples = 0, mixture_seconds = 0;
-  double accurate_samples = 0, accurate_seconds = 0, pair_seconds = 0, pair_pixel = 0;
+  double rule_samples = 0, rule_work = 0, cheapest_samples = 0, cheapest_work = 0;
+  double mixture_samples = 0, mixture_work = 0;
+  double accurate_samples = 0, accurate_work = 0, pair_work = 0, pair_pixel = 0;
   Spectrum pair_delta;
   void operator+=(const EffortStats& o) {
-    gathers += o.gathers, seconds += o.seconds, sample_seconds += o.sample_seconds;
+    gathers += o.gathers, work += o.work, sample_work += o.sample_work;
     predicted += o.predicted, measured += o.measured;
     split_within += o.split_within, split_second += o.split_second;
     calls += o.calls, call_rate += o.call_rate, call_m2 += o.call_m2;
     decided += o.decided, vrls += o.vrls, roulette_excess += o.roulette_excess, split_excess += o.split_excess;
     cheapest_excess += o.cheapest_excess, mixture_excess += o.mixture_excess, mixture_measured += o.mixture_measured;
-    rule_samples += o.rule_samples, rule_seconds += o.rule_seconds;
-    cheapest_samples += o.cheapest_samples, cheapest_seconds += o.cheapest_seconds;
-    mixture_samples += o.mixture_samples, mixture_seconds += o.mixture_seconds;
-    accurate_samples += o.accurate_samples, accurate_seconds += o.accurate_seconds;
-    pair_seconds += o.pair_seconds, pair_pixel += o.pair_pixel, pair_delta += o.pair_delta;
+    rule_samples += o.rule_samples, rule_work += o.rule_work;
+    cheapest_samples += o.cheapest_samples, cheapest_work += o.cheapest_work;
+    mixture_samples += o.mixture_samples, mixture_work += o.mixture_work;
+    accurate_samples += o.accurate_samples, accurate_work += o.accurate_work;
+    pair_work += o.pair_work, pair_pixel += o.pair_pixel, pair_delta += o.pair_delta;
   }
 };
 
 // What a pixel's path-traced remainder tells the price in a pass (docs/maths.md#effort-remainder):
-// the camera vertices it left, the paths it traced from them, their seconds, and the sum over
+// the camera vertices it left, the paths it traced from them, their work, and the sum over
 // the paths of (contribution to the pixel)^2 / rate, an unbiased estimate of the second moment
 // of one path per vertex.
 struct RemainderStats {
-  double launches = 0, paths = 0, seconds = 0, m2 = 0;
+  double launches = 0, paths = 0, work = 0, m2 = 0;
   void operator+=(const RemainderStats& o) {
-    launches += o.launches, paths += o.paths, seconds += o.seconds, m2 += o.m2;
+    launches += o.launches, paths += o.paths, work += o.work, m2 += o.m2;
   }
 };
 
@@ -89,9 +90,7 @@ class EffortPrice {
   static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
 
   EffortPrice() = default;
-  // timed_share: the share of pixels that measure their seconds after the first kMinPasses
-  // passes (timed()).
-  EffortPrice(int width, int height, double timed_share = kTimed);
+  EffortPrice(int width, int height);
 
   // What each pixel's medium-to-medium and medium-to-surface gathers and its remainder tell
   // in the current pass, filled by the renderer. Kept with the price: allocated and zeroed
@@ -103,17 +102,9 @@ class EffortPrice {
   // The current pass's PixelStats, one per pixel, each to be overwritten by the pass (not
   // zeroed: at 48 x 48 that memset was a few percent of an equiangular pass).
   PixelStats& BeginPass();
-  // Whether a pixel measures its seconds in this pass (vrlis::EffortSettings::timed), u
-  // uniform in [0, 1) drawn for the pixel: in the first kMinPasses passes always, after them
-  // with probability timed_share (a timed pixel reads the clock several times, each read a
-  // sizeable part of an equiangular gather); Add weighs the timed pixels' seconds by the
-  // inverse of that probability, so every sum of seconds keeps its mean. A small image times
-  // at least kTimedPixels a pass (fewer made its decisions flip with the clock's noise).
-  bool timed(double u) const { return u < timing_rate(); }
-  static constexpr double kTimed = 1.0 / 8, kTimedPixels = 512;
-  // One finished pass: its image, the seconds its timed pixels took (summed over threads) and
+  // One finished pass: its image, the work its pixels counted (summed over pixels) and
   // the PixelStats of BeginPass.
-  void Add(const Film& pass, double pixel_seconds);
+  void Add(const Film& pass, double pixel_work);
   // The decisions below are made once per pass, when Add refreshes the price: a pixel only
   // reads them.
   // The price of a gather: (pixel cost / pixel variance) / gather cost x (measured / predicted
@@ -127,25 +118,25 @@ class EffortPrice {
     return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;
   }
   // The demand of one call of the gathers at pixel (x, y) (vrlis::EffortSettings::call_demand):
-  // sqrt((second moment / decision seconds of a taken call) x (pixel cost / pixel variance)),
-  // both from the earlier calls of the pixel's tile (the seconds from the kind's calls while
+  // sqrt((second moment / decision work of a taken call) x (pixel cost / pixel variance)),
+  // both from the earlier calls of the pixel's tile (the work from the kind's calls while
   // the tile has taken few); 1 before kMinPasses passes.
   double call_demand(GatherKind kind, int x, int y) const {
     return call_demand_[static_cast<int>(kind)][Tile(x, y)];
   }
   // The paths the remainder asks for at a camera vertex of pixel (x, y), EARS's splitting
-  // factor: sqrt((second moment / seconds of one path) x (pixel cost / pixel variance)) from
-  // the earlier paths of the pixel's tile (the seconds of all paths while the tile has traced
+  // factor: sqrt((second moment / work of one path) x (pixel cost / pixel variance)) from
+  // the earlier paths of the pixel's tile (the work of all paths while the tile has traced
   // few); 1 before a price is learned.
   double remainder_demand(int x, int y) const { return remainder_demand_[Tile(x, y)]; }
   // The model of `auto`'s gathers of this kind at a pixel in this pass
   // (vrlis::EffortSettings::model), u uniform in [0, 1) drawn for the pixel: of the rule, the
   // cheapest model, the mixture and the accurate model, the one whose variance over the
   // rule's (estimated over the image from the rule's own samples, the accurate model's from
-  // the pairs) is worth the least against the seconds it saves or costs
+  // the pairs) is worth the least against the work it saves or costs
   // (docs/maths.md#effort-cheapest); where that is not the rule, the rule with
   // probability kExplore, which keeps the estimates learning. Before any price, the cheapest
-  // model and the mixture each with probability kPilot (their seconds are measured once).
+  // model and the mixture each with probability kPilot (their work is measured once).
   vrlis::EffortModel model(GatherKind kind, double u) const {
     if (passes_ < kMinPasses) return u < kPilot ? vrlis::EffortModel::Cheapest
                                      : u < 2 * kPilot ? vrlis::EffortModel::Mixture : vrlis::EffortModel::Chosen;
@@ -178,7 +169,7 @@ class EffortPrice {
   static constexpr double kAccurateMargin = 0.8;
   // Whether a pixel's gathers of this kind are decided one by one in this pass
   // (vrlis::EffortSettings::decide), u uniform in [0, 1) drawn for the pixel: where, over the
-  // image's earlier decided calls, the decisions' seconds exceed what the variance they save
+  // image's earlier decided calls, the decisions' work exceeds what the variance they save
   // is worth (docs/maths.md#effort-decide), with probability kExplore; elsewhere always.
   // Before any price, with probability kCalibrate: unpriced, a decided gather is taken once as
   // any other, and only its bounds, which calibrate the first price, cost (the tight one about
@@ -194,10 +185,10 @@ class EffortPrice {
   static constexpr double kCalibrate = 1.0 / 8, kTrial = 1.0 / 4;
   int passes() const { return passes_; }
   // What the image's model was chosen from at the last refresh, per pixel and pass: the
-  // variance and seconds of the rule (the measured mix of models less the others' shares),
+  // variance and work of the rule (the measured mix of models less the others' shares),
   // and each alternative's change of both against it and its share of the measured samples;
   // `known` false where it could not be estimated. The variances come from the image and the
-  // models' samples, the seconds from the clock.
+  // models' samples, the work counted.
   struct ModelChange {
     vrlis::EffortModel model = vrlis::EffortModel::Chosen;
     double dv = 0, dt = 0, share = 0;
@@ -219,26 +210,22 @@ class EffortPrice {
   bool DecisionsPay(int kind) const;
   double CallDemand(int kind, std::size_t tile) const;
   double RemainderDemand(std::size_t tile) const;
-  double timing_rate() const {
-    return passes_ < kMinPasses ? 1 : std::min(1.0, std::max(timed_share_, kTimedPixels / double(pixels_)));
-  }
   std::size_t Tile(int x, int y) const {
     return static_cast<std::size_t>(y / kTile) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(x / kTile);
   }
 
   // Of the first kMinPasses passes, or of those after: per pixel, the sums of one pass's
-  // RMS RGB value and of its square, and the pixels' seconds; per kind, the pixels that
+  // RMS RGB value and of its square, and the pixels' work; per kind, the pixels that
   // called its gathers and those of them that decided the gathers under a price, and the
   // samples below the accurate tier and those of them the cheapest model and the mixture took.
   struct Passes {
     std::vector<double> sum, sum_sq;
-    double pixel_seconds = 0;
+    double pixel_work = 0;
     int count = 0;
     double called[2] = {0, 0}, decided[2] = {0, 0};
     double switchable[2] = {0, 0}, cheapest[2] = {0, 0}, mixture[2] = {0, 0};
   };
   int width_ = 0, height_ = 0, passes_ = 0;
-  double timed_share_ = kTimed;
   std::size_t pixels_ = 0;
   Passes passes_of_[2];
   // The variance and cost of a pixel per pass, of the estimator the decisions made.

@@ -1,7 +1,8 @@
 #pragma once
 // The VRL estimators of docs/maths.md#estimators, one sample each, as a renderer uses the
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
-#include <vrlis/gather/effort.hpp>
+#include <vrlis/effort/marginal_fits.hpp>
+#include <vrlis/effort/policy.hpp>
 #include <vrlis/gather/gather_sample.hpp>
 #include <vrlis/method.hpp>
 
@@ -39,7 +40,7 @@ Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, 
 
 // The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
 // order: the camera pass's inner loop, one call of the library's GatherMediumVrls. With the
-// effort control (vrlis/gather/effort.hpp) each VRL is gathered q times on average, q from its
+// effort control (vrlis/effort/policy.hpp) each VRL is gathered q times on average, q from its
 // predicted contribution throughput x flux; `stats`, if set, adds what the price learns from;
 // `weight_log`, if set, records every sample taken (weight_log.hpp). Each sample's connection
 // is taken up to the geometry term `bound` (share.hpp; the remainder carries the rest).

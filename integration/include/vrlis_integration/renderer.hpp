@@ -1,10 +1,12 @@
 #pragma once
-// Progressive renderers: each call renders one independent pass (one sample per pixel,
-// and for the VRL renderer a fresh set of light paths) from (seed, pass) alone, so that a
-// driver can interleave passes of several samplers, or renderers, in one process and the
-// result does not depend on the thread count.
+// Progressive renderers: each call renders one pass (one sample per pixel, and for the VRL
+// renderer a fresh set of light paths) from (seed, pass) and, with the effort control on, what
+// the renderer learned from the passes it rendered before; never from the thread count or a
+// clock. A driver can interleave passes of several samplers, or renderers, in one process.
 #include <atomic>
 #include <cstdint>
+
+#include <vrlis/effort/marginal_fits.hpp>
 
 #include "effort_price.hpp"
 #include "film.hpp"
@@ -14,9 +16,11 @@
 
 namespace vrlis::integration {
 
+// A pass's VRLs and gathers, its seconds (wall clock: for the driver's report, never a
+// decision) and the camera pass's counted work (work.hpp; the VRL renderer's).
 struct PassStats {
   std::uint64_t vrls = 0, gathers = 0;
-  double seconds = 0;
+  double seconds = 0, work = 0;
 };
 
 struct RenderSettings {
@@ -48,9 +52,10 @@ class Renderer {
 // The bidirectional VRL pipeline: light pass, then camera pass. With the transport's effort
 // control on, the renderer learns the price of variance from each pass it renders and the
 // next pass's gathers use it: a pass then depends on the passes this renderer rendered
-// before it (and on their measured times), not on (seed, pass) alone. With VrlMarginal as
-// step one the same holds of which gathers it fits (TransportSettings::marginal_fraction),
-// learned from the scores of the earlier passes: deterministic, so images stay reproducible.
+// before it, each a function of (seed, pass), so a render still is of its seed alone (the
+// price reads counted work, never a clock: work.hpp). With VrlMarginal as step one the same
+// holds of which gathers it fits (TransportSettings::marginal_fraction), learned from the
+// scores of the earlier passes.
 class VrlRenderer : public Renderer {
  public:
   VrlRenderer(const Scene& scene, const RenderSettings& settings)

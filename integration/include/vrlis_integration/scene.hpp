@@ -7,6 +7,7 @@
 #include "light.hpp"
 #include "material.hpp"
 #include "medium.hpp"
+#include "work.hpp"
 
 namespace vrlis::integration {
 
@@ -44,12 +45,18 @@ struct Scene {
   Lights lights;
   Camera camera;
 
-  bool Intersect(const Ray& r, SurfaceHit* hit) const { return geometry->Intersect(r, kInfinity, hit); }
+  // The rays, each counted as work on this thread (work.hpp).
+  bool Intersect(const Ray& r, SurfaceHit* hit) const {
+    ThreadWork() += ray_work::kIntersect;
+    return geometry->Intersect(r, kInfinity, hit);
+  }
+  bool Occluded(Vec3f p0, Vec3f p1) const {
+    ThreadWork() += ray_work::kOccluded;
+    return geometry->Occluded(p0, p1);
+  }
   float Transmittance(Vec3f p0, Vec3f p1) const { return medium.Transmittance(p0, p1); }
   // Visibility times transmittance.
-  float Connect(Vec3f p0, Vec3f p1) const {
-    return geometry->Occluded(p0, p1) ? 0.f : medium.Transmittance(p0, p1);
-  }
+  float Connect(Vec3f p0, Vec3f p1) const { return Occluded(p0, p1) ? 0.f : medium.Transmittance(p0, p1); }
 };
 
 }  // namespace vrlis::integration

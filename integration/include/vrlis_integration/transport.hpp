@@ -1,7 +1,7 @@
 #pragma once
 // Which parts of light transport a render computes (see docs/renderer.md for how the parts
 // add up to the whole without counting a path twice).
-#include <vrlis/gather/effort.hpp>
+#include <vrlis/effort/policy.hpp>
 #include <vrlis/method.hpp>
 
 #include "share.hpp"

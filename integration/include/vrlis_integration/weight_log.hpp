@@ -1,7 +1,7 @@
 #pragma once
 // The weights of the VRL gather samples a render takes, for their tails in docs/stability.md
 // (vrl_compare --gather-weights): the largest effort weight 1 / q (roulette raises it, the
-// floor bounds it: vrlis/gather/effort.hpp), how many samples had a weight that is not
+// floor bounds it: vrlis/effort/policy.hpp), how many samples had a weight that is not
 // finite, and the distribution of the samples' contributions to their pixel, in bins of 1/128
 // of an octave, so that a quantile costs no memory per sample. Header-only and lock-free;
 // recording draws no random numbers, so the image is unchanged.

@@ -1,0 +1,36 @@
+#pragma once
+// The renderer's counted work (docs/maths.md#effort-work): what the effort control prices
+// instead of the clock, in the library's work units (vrlis/effort/work.hpp). The library
+// counts a gather call's own work in its tally; the scene counts its rays here. A pixel runs
+// on one thread from start to end, so the work counted on that thread between two points of
+// it is that pixel's, whatever the other threads do.
+#include "ray_work.hpp"
+
+namespace vrlis::integration {
+
+// The work counted on this thread so far.
+inline double& ThreadWork() {
+  thread_local double work = 0;
+  return work;
+}
+
+// Adds the work counted on this thread during its scope to *work, if set. The scope counts
+// from zero and hands its count on to the enclosing one at its end: a difference of two
+// readings would round by what the thread did before, and images would depend on it.
+class WorkScope {
+ public:
+  explicit WorkScope(double* work) : work_(work), outer_(ThreadWork()) { ThreadWork() = 0; }
+  ~WorkScope() {
+    const double inner = ThreadWork();
+    if (work_) *work_ += inner;
+    ThreadWork() = outer_ + inner;
+  }
+  WorkScope(const WorkScope&) = delete;
+  WorkScope& operator=(const WorkScope&) = delete;
+
+ private:
+  double* work_;
+  double outer_;
+};
+
+}  // namespace vrlis::integration
