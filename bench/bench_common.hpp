@@ -95,7 +95,8 @@ void RegisterEstimator();
 void RegisterVrlPoint();
 void RegisterGather();
 void RegisterWork();
-// Work/ray/...: only where the lab is built with the example scenes (VRLIS_BENCH_RAYS).
-void RegisterRays();
+// Work/ray/..., Work/renderer/...: only where the lab is built with the example scenes
+// (VRLIS_BENCH_RENDERER).
+void RegisterRendererWork();
 
 }  // namespace vrlis::bench

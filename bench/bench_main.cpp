@@ -14,7 +14,7 @@
 //   VrlMarginalBounded/step/g:<g>  the same over the bounded camera segments only
 //   Gather/<method>/g:<g>      the library's whole gather call, and GatherPart/*: its parts
 //   Work/...                   the effort control's counted operations (bench_work.cpp,
-//                              bench_rays.cpp; tools/work_costs.sh)
+//                              bench_renderer_work.cpp; tools/work_costs.sh)
 //
 // Every benchmark cycles in order through a pool of 1024 random configurations (those of
 // the accuracy study, seeded), so that no single warm branch is timed. Float throughout;
@@ -83,8 +83,8 @@ int main(int argc, char** argv) {
   RegisterEstimator();
   RegisterGather();
   RegisterWork();
-#ifdef VRLIS_BENCH_RAYS
-  RegisterRays();
+#ifdef VRLIS_BENCH_RENDERER
+  RegisterRendererWork();
 #endif
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -5,6 +5,8 @@
 //   Work/bound/<medium|surface>-<quick|tight>  the bounds of 8 VRLs at once, in lanes
 //   Work/call/<method>     GatherMediumVrls over 256 VRLs, the control off, a visitor that
 //                          only sums: the call's loop per VRL beyond its batched samples
+//   Work/call-decided/<method>  the same with every gather decided, unpriced (each still
+//                          taken once): beyond Work/call/ and both bounds, a decision's own
 //   Work/mixture-density   GatherBatch of `auto` with its samples' density over the mixture
 //                          (measure_mixture), over the same without it, per sample
 #include "bench_common.hpp"
@@ -48,17 +50,20 @@ void Bound(benchmark::State& state, bool surface, bool tight) {
   state.SetItemsProcessed(state.iterations() * kBoundBatch);
 }
 
-void Call(benchmark::State& state, SegmentChoice method) {
+void Call(benchmark::State& state, SegmentChoice method, bool decided) {
   constexpr int kVrls = 256;
   const Pools& pools = PoolsFor(kWorkG);
   const std::vector<VrlSegment<float>> vrls = PoolVrls(pools);
   const GatherSamplers samplers{method, VrlSamplers::Of<VrlPointEntry>()};
+  EffortSettings effort;
+  effort.on = effort.decide = decided;
+  const std::vector<float> weights(kVrls, 1.f);
   size_t first = 0;
   float u = 0.5f;
   for (auto _ : state) {
     const MediumGatherQuery<float>& q = pools.configs[first].query;
     float sum = 0;
-    GatherMediumVrls(samplers, EffortSettings{}, q.camera, q.medium, &vrls[first], static_cast<const float*>(nullptr),
+    GatherMediumVrls(samplers, effort, q.camera, q.medium, &vrls[first], weights.data(),
                      kVrls, [&] { return u = u + 0.618034f >= 1 ? u - 0.381966f : u + 0.618034f; },
                      [&](int, const GatherSample<float>& s, float w) { sum += w * s.weight; });
     benchmark::DoNotOptimize(sum);
@@ -95,9 +100,10 @@ void RegisterWork() {
           std::string("Work/bound/") + (surface ? "surface" : "medium") + (tight ? "-tight" : "-quick");
       benchmark::RegisterBenchmark(name.c_str(), [surface, tight](benchmark::State& s) { Bound(s, surface, tight); });
     }
-  for (SegmentChoice method : kSegmentSamplers)
-    benchmark::RegisterBenchmark(("Work/call/" + std::string(method.name())).c_str(),
-                                 [method](benchmark::State& s) { Call(s, method); });
+  for (bool decided : {false, true})
+    for (SegmentChoice method : kSegmentSamplers)
+      benchmark::RegisterBenchmark(((decided ? "Work/call-decided/" : "Work/call/") + std::string(method.name())).c_str(),
+                                   [method, decided](benchmark::State& s) { Call(s, method, decided); });
   benchmark::RegisterBenchmark("Work/mixture-density/measured", [](benchmark::State& s) { MixtureDensity(s, true); });
   benchmark::RegisterBenchmark("Work/mixture-density/plain", [](benchmark::State& s) { MixtureDensity(s, false); });
 }

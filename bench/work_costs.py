@@ -2,8 +2,9 @@
 """The effort control's work constants from vrlis_bench's JSON (tools/work_costs.sh).
 
 Writes include/vrlis/effort/work_costs.hpp (the library's operations) and
-integration/include/vrlis_integration/ray_work.hpp (the example renderer's rays); a unit is a
-nanosecond of the machine measured (docs/maths.md#effort-work).
+integration/include/vrlis_integration/renderer_work.hpp (the example renderer's rays, its
+calls' and its pixels' own work); a unit is a nanosecond of the machine measured
+(docs/maths.md#effort-work).
 
   work_costs.py BENCH.json [--write]   prints the constants; --write also writes both headers
 """
@@ -20,20 +21,19 @@ G = ("-0.90", "0.50", "0.90")
 
 
 def per_item(path):
-    """Median ns per item of each benchmark (the repetitions' median where there are some)."""
+    """Median ns per item of each benchmark, and its counters (the repetitions' medians)."""
     data = json.loads(Path(path).read_text())
-    runs, medians = {}, {}
+    runs, counters = {}, {}
     for b in data["benchmarks"]:
-        if "items_per_second" not in b or b.get("error_occurred"):
+        if "items_per_second" not in b or b.get("error_occurred") or b.get("run_type") == "aggregate":
             continue
-        ns = 1e9 / b["items_per_second"]
-        if b.get("run_type") == "aggregate":
-            if b.get("aggregate_name") == "median":
-                medians[b["run_name"]] = ns
-        else:
-            runs.setdefault(b.get("run_name", b["name"]), []).append(ns)
+        name = b.get("run_name", b["name"])
+        runs.setdefault(name, []).append(1e9 / b["items_per_second"])
+        for key in ("counted", "vrls"):
+            if key in b:
+                counters.setdefault(f"{name}#{key}", []).append(b[key])
     out = {name: statistics.median(v) for name, v in runs.items()}
-    out.update(medians)
+    out.update({name: statistics.median(v) for name, v in counters.items()})
     return out, data.get("context", {})
 
 
@@ -43,15 +43,22 @@ def geomean(values):
 
 def constants(ns):
     samplers = sorted({k.split("/")[1] for k in ns if k.startswith("GatherBatch/") and "+" not in k.split("/")[1]})
-    table, marginal, loop = [], [], []
+    table, marginal, loop, decision = [], [], [], []
     for name in samplers:
         medium = geomean([ns[f"GatherBatch/{name}/g:{g}"] for g in G])
         surface = geomean([ns[f"SurfaceGatherBatch/{name}/g:{g}"] for g in G])
         table.append((name, medium, surface))
         marginal += [ns[f"GatherBatch/{name}+marginal/g:{g}"] - ns[f"GatherBatch/{name}/g:{g}"] for g in G]
         loop.append(ns[f"Work/call/{name}"] - ns[f"GatherBatch/{name}/g:0.50"])
+        decision.append(ns[f"Work/call-decided/{name}"] - ns[f"Work/call/{name}"] - ns["Work/bound/medium-quick"]
+                        - ns["Work/bound/medium-tight"])
     rays = {kind: geomean([v for k, v in ns.items() if k.startswith(f"Work/ray/{kind}/")])
             for kind in ("intersect", "occluded")}
+    scenes = [k.split("/")[-1] for k in ns if k.startswith("Work/renderer/call/") and "#" not in k]
+    call = statistics.mean(max(0.0, ns[f"Work/renderer/call/{s}"] - ns[f"Work/renderer/call/{s}#counted"])
+                           for s in scenes)
+    pixel = statistics.mean(max(0.0, ns[f"Work/renderer/pixel/{s}"] - ns[f"Work/renderer/pixel/{s}#counted"]
+                                - call * ns[f"Work/renderer/pixel/{s}#vrls"]) for s in scenes)
     return {
         "samplers": table,
         "kMarginalFit": max(0.0, statistics.mean(marginal)),
@@ -61,8 +68,11 @@ def constants(ns):
         "kSurfaceQuickBound": ns["Work/bound/surface-quick"],
         "kSurfaceTightBound": ns["Work/bound/surface-tight"],
         "kVrl": max(0.0, statistics.mean(loop)),
+        "kDecision": max(0.0, statistics.mean(decision)),
         "kIntersect": rays["intersect"],
         "kOccluded": rays["occluded"],
+        "kCallVrl": call,
+        "kPixel": pixel,
     }
 
 
@@ -98,21 +108,27 @@ inline constexpr double kSurfaceQuickBound = {c['kSurfaceQuickBound']:.2f};
 inline constexpr double kSurfaceTightBound = {c['kSurfaceTightBound']:.2f};
 // A call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/, mean over samplers).
 inline constexpr double kVrl = {c['kVrl']:.2f};
+// A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
+inline constexpr double kDecision = {c['kDecision']:.2f};
 
 }}  // namespace vrlis::work_costs
 """
-    rays = f"""#pragma once
-{provenance(context)}namespace vrlis::integration::ray_work {{
+    renderer = f"""#pragma once
+{provenance(context)}namespace vrlis::integration::renderer_work {{
 
-// Work units (vrlis/effort/work.hpp) of one ray of the example scenes' Embree geometry
-// (Work/ray/, geometric mean over the scenes).
+// Work units (vrlis/effort/work.hpp) of what the example renderer owns: one ray of the example
+// scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather call's own work
+// per VRL beyond the library's and the rays (Work/renderer/call/: its time less what is
+// counted, mean over the scenes); a pixel's beyond its calls and rays (Work/renderer/pixel/).
 inline constexpr double kIntersect = {c['kIntersect']:.1f};
 inline constexpr double kOccluded = {c['kOccluded']:.1f};
+inline constexpr double kCallVrl = {c['kCallVrl']:.1f};
+inline constexpr double kPixel = {c['kPixel']:.1f};
 
-}}  // namespace vrlis::integration::ray_work
+}}  // namespace vrlis::integration::renderer_work
 """
     (ROOT / "include/vrlis/effort/work_costs.hpp").write_text(lib)
-    (ROOT / "integration/include/vrlis_integration/ray_work.hpp").write_text(rays)
+    (ROOT / "integration/include/vrlis_integration/renderer_work.hpp").write_text(renderer)
 
 
 def main():
@@ -130,7 +146,7 @@ def main():
             print(f"{k:20s} {v:8.2f}")
     if "--write" in sys.argv[2:]:
         write(c, context)
-        print("wrote include/vrlis/effort/work_costs.hpp, integration/include/vrlis_integration/ray_work.hpp")
+        print("wrote include/vrlis/effort/work_costs.hpp, integration/include/vrlis_integration/renderer_work.hpp")
 
 
 if __name__ == "__main__":

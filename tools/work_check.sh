@@ -15,6 +15,10 @@ echo "|---|---|---|---|"
 for scene in bidirectional room cube corner cloud fog; do
   build/examples/vrl_render --scene "$scene" --width 64 --height 64 --spp 8 --threads 1 --quiet --json \
     --out "out/work_check/$scene" "$@" >"out/work_check/$scene.json"
-  /usr/bin/python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); w=j["counted_work"]*1e-9; t=j["render_time_s"]
-print(f"| {j[\"scene\"]} | {w:.3f} | {t:.3f} | {w/t:.2f} |")' "out/work_check/$scene.json"
+  /usr/bin/python3 - "out/work_check/$scene.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+w, t = j["counted_work"] * 1e-9, j["render_time_s"]
+print(f"| {j['scene']} | {w:.3f} | {t:.3f} | {w / t:.2f} |")
+PY
 done

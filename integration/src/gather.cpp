@@ -100,9 +100,10 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (split) ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     Rng same = own;
+    ThreadWork() += n * renderer_work::kCallVrl;  // this loop's own, taken or not
     {
       WorkScope scope(&connect_work);  // the library counts its own work in the tally
-      gather_chunk(effort, own, segments, weights, n, connect, stats ? &tally : nullptr);
+      gather_chunk(effort, own, segments, weights, n, connect, &tally);
     }
     if (pair) {
       auto measure = [&](int i, const vrlis::GatherSample<float>& s, float) {

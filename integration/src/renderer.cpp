@@ -89,6 +89,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
       Spectrum L;
       {
         WorkScope scope(&pixel_work[i]);
+        ThreadWork() += renderer_work::kPixel;
         L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort);
       }
       gathers.fetch_add(count.Total(), std::memory_order_relaxed);
@@ -124,6 +125,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     Spectrum L;
     {
       WorkScope scope(&pixel_work[i]);  // from zero, so the pixel's own (not its thread's)
+      ThreadWork() += renderer_work::kPixel;
       L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
     }
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);

@@ -12,21 +12,23 @@ struct SamplerWork {
   double medium, surface;
 };
 inline constexpr SamplerWork kSamplers[] = {
-    {"auto", 256.4, 194.5},
-    {"cauchy-mixture", 73.8, 100.6},
-    {"cauchy-sum", 83.0, 102.7},
-    {"equiangular", 32.5, 42.3},
-    {"full-product", 77.8, 153.0},
-    {"novak", 68.2, 146.7},
+    {"auto", 261.6, 196.7},
+    {"cauchy-mixture", 74.9, 99.4},
+    {"cauchy-sum", 84.5, 106.7},
+    {"equiangular", 32.4, 44.5},
+    {"full-product", 82.2, 153.6},
+    {"novak", 71.5, 154.7},
 };
-inline constexpr double kMarginalFit = 301.6;  // VrlMarginal over VrlPoint, per medium sample
-inline constexpr double kMixtureDensity = 50.3;  // a sample's density over the mixture
+inline constexpr double kMarginalFit = 309.5;  // VrlMarginal over VrlPoint, per medium sample
+inline constexpr double kMixtureDensity = 65.2;  // a sample's density over the mixture
 // Per VRL, in lanes of eight (Work/bound/).
-inline constexpr double kMediumQuickBound = 4.36;
-inline constexpr double kMediumTightBound = 17.92;
-inline constexpr double kSurfaceQuickBound = 3.64;
-inline constexpr double kSurfaceTightBound = 7.02;
+inline constexpr double kMediumQuickBound = 4.51;
+inline constexpr double kMediumTightBound = 18.05;
+inline constexpr double kSurfaceQuickBound = 3.69;
+inline constexpr double kSurfaceTightBound = 7.08;
 // A call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/, mean over samplers).
-inline constexpr double kVrl = 7.68;
+inline constexpr double kVrl = 20.35;
+// A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
+inline constexpr double kDecision = 55.55;
 
 }  // namespace vrlis::work_costs

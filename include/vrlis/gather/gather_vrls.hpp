@@ -101,7 +101,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     const int lane = i % kBoundBatch, first = i - lane, block = std::min(kBoundBatch, count - first);
     if (decide && lane == 0) {
       bounds(first, block, quick, nullptr), tight_taken = false;
-      loop_work += block * bound_work.quick;
+      loop_work += block * (bound_work.quick + work_costs::kDecision);
     }
     int n = 1;
     Real weight = 1;

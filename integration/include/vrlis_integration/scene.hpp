@@ -47,11 +47,11 @@ struct Scene {
 
   // The rays, each counted as work on this thread (work.hpp).
   bool Intersect(const Ray& r, SurfaceHit* hit) const {
-    ThreadWork() += ray_work::kIntersect;
+    ThreadWork() += renderer_work::kIntersect;
     return geometry->Intersect(r, kInfinity, hit);
   }
   bool Occluded(Vec3f p0, Vec3f p1) const {
-    ThreadWork() += ray_work::kOccluded;
+    ThreadWork() += renderer_work::kOccluded;
     return geometry->Occluded(p0, p1);
   }
   float Transmittance(Vec3f p0, Vec3f p1) const { return medium.Transmittance(p0, p1); }

@@ -4,7 +4,7 @@
 // counts a gather call's own work in its tally; the scene counts its rays here. A pixel runs
 // on one thread from start to end, so the work counted on that thread between two points of
 // it is that pixel's, whatever the other threads do.
-#include "ray_work.hpp"
+#include "renderer_work.hpp"
 
 namespace vrlis::integration {
 
