@@ -4,11 +4,12 @@
 //       along camera rays through the image; occlusion between points on two of them (the
 //       camera gathers' connections join such points)
 //   Work/renderer/call/<scene>   GatherMediumToMedium over a pass's VRLs along camera segments,
-//       the control off, per VRL; the counter `counted` is the work already counted (the
-//       library's tally, the rays): the rest is the integration's own per VRL
+//       the control off (one sample per VRL), per VRL; the counter `counted` is the work
+//       already counted (the library's tally, the rays): the rest is the integration's own per
+//       sample it connects
 //   Work/renderer/pixel/<scene>  a 32 x 32 pass of the scene's default transport, the control
 //       off, per pixel; counters `counted` and `vrls` (VRLs gathered per pixel): the rest, less
-//       the calls' own per VRL, is the pixel's (camera path, VPLs, single scattering, film)
+//       the calls' own per sample, is the pixel's (camera path, VPLs, single scattering, film)
 #include "bench_common.hpp"
 
 #include <vrlis_integration/gather.hpp>
@@ -95,7 +96,7 @@ void Call(benchmark::State& state, const char* name) {
   const double items = double(state.iterations()) * double(vrls.size());
   state.SetItemsProcessed(static_cast<int64_t>(items));
   // The work counted without the constant this measures.
-  state.counters["counted"] = counted / items - renderer_work::kCallVrl;
+  state.counters["counted"] = counted / items - renderer_work::kConnect;
 }
 
 void Pixel(benchmark::State& state, const char* name) {
@@ -117,7 +118,7 @@ void Pixel(benchmark::State& state, const char* name) {
   const double pixels = double(state.iterations()) * settings.width * settings.height;
   state.SetItemsProcessed(static_cast<int64_t>(pixels));
   // The work counted without the constants this and Call measure.
-  state.counters["counted"] = counted / pixels - renderer_work::kPixel - renderer_work::kCallVrl * gathers / pixels;
+  state.counters["counted"] = counted / pixels - renderer_work::kPixel - renderer_work::kConnect * gathers / pixels;
   state.counters["vrls"] = gathers / pixels;
 }
 

@@ -71,7 +71,7 @@ def constants(ns):
         "kDecision": max(0.0, statistics.mean(decision)),
         "kIntersect": rays["intersect"],
         "kOccluded": rays["occluded"],
-        "kCallVrl": call,
+        "kConnect": call,
         "kPixel": pixel,
     }
 
@@ -117,12 +117,13 @@ inline constexpr double kDecision = {c['kDecision']:.2f};
 {provenance(context)}namespace vrlis::integration::renderer_work {{
 
 // Work units (vrlis/effort/work.hpp) of what the example renderer owns: one ray of the example
-// scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather call's own work
-// per VRL beyond the library's and the rays (Work/renderer/call/: its time less what is
-// counted, mean over the scenes); a pixel's beyond its calls and rays (Work/renderer/pixel/).
+// scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather sample's
+// connection beyond the library's work and its ray (Work/renderer/call/, every gather taken
+// once: its time less what is counted, mean over the scenes); a pixel's beyond its calls and
+// rays (Work/renderer/pixel/).
 inline constexpr double kIntersect = {c['kIntersect']:.1f};
 inline constexpr double kOccluded = {c['kOccluded']:.1f};
-inline constexpr double kCallVrl = {c['kCallVrl']:.1f};
+inline constexpr double kConnect = {c['kConnect']:.1f};
 inline constexpr double kPixel = {c['kPixel']:.1f};
 
 }}  // namespace vrlis::integration::renderer_work

@@ -84,6 +84,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     if (split)
       for (int i = 0; i < n; ++i) samples[i] = 0, sum_y[i] = sum_y2[i] = 0;
     auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
+      ThreadWork() += renderer_work::kConnect;  // this function's own, beyond its ray
       Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
       sum += x;
       if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
@@ -100,7 +101,6 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       if (split) ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
     };
     Rng same = own;
-    ThreadWork() += n * renderer_work::kCallVrl;  // this loop's own, taken or not
     {
       WorkScope scope(&connect_work);  // the library counts its own work in the tally
       gather_chunk(effort, own, segments, weights, n, connect, &tally);

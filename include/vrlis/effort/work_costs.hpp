@@ -12,23 +12,23 @@ struct SamplerWork {
   double medium, surface;
 };
 inline constexpr SamplerWork kSamplers[] = {
-    {"auto", 261.6, 196.7},
-    {"cauchy-mixture", 74.9, 99.4},
-    {"cauchy-sum", 84.5, 106.7},
-    {"equiangular", 32.4, 44.5},
-    {"full-product", 82.2, 153.6},
-    {"novak", 71.5, 154.7},
+    {"auto", 242.5, 181.5},
+    {"cauchy-mixture", 73.6, 95.2},
+    {"cauchy-sum", 82.7, 99.1},
+    {"equiangular", 31.4, 41.2},
+    {"full-product", 78.5, 150.9},
+    {"novak", 68.1, 144.0},
 };
-inline constexpr double kMarginalFit = 309.5;  // VrlMarginal over VrlPoint, per medium sample
-inline constexpr double kMixtureDensity = 65.2;  // a sample's density over the mixture
+inline constexpr double kMarginalFit = 299.4;  // VrlMarginal over VrlPoint, per medium sample
+inline constexpr double kMixtureDensity = 52.3;  // a sample's density over the mixture
 // Per VRL, in lanes of eight (Work/bound/).
-inline constexpr double kMediumQuickBound = 4.51;
-inline constexpr double kMediumTightBound = 18.05;
-inline constexpr double kSurfaceQuickBound = 3.69;
-inline constexpr double kSurfaceTightBound = 7.08;
+inline constexpr double kMediumQuickBound = 4.19;
+inline constexpr double kMediumTightBound = 17.93;
+inline constexpr double kSurfaceQuickBound = 3.65;
+inline constexpr double kSurfaceTightBound = 7.00;
 // A call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/, mean over samplers).
-inline constexpr double kVrl = 20.35;
+inline constexpr double kVrl = 11.29;
 // A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
-inline constexpr double kDecision = 55.55;
+inline constexpr double kDecision = 34.19;
 
 }  // namespace vrlis::work_costs

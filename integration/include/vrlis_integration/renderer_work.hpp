@@ -4,12 +4,13 @@
 namespace vrlis::integration::renderer_work {
 
 // Work units (vrlis/effort/work.hpp) of what the example renderer owns: one ray of the example
-// scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather call's own work
-// per VRL beyond the library's and the rays (Work/renderer/call/: its time less what is
-// counted, mean over the scenes); a pixel's beyond its calls and rays (Work/renderer/pixel/).
-inline constexpr double kIntersect = 50.5;
-inline constexpr double kOccluded = 38.4;
-inline constexpr double kCallVrl = 76.8;
+// scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather sample's
+// connection beyond the library's work and its ray (Work/renderer/call/, every gather taken
+// once: its time less what is counted, mean over the scenes); a pixel's beyond its calls and
+// rays (Work/renderer/pixel/).
+inline constexpr double kIntersect = 35.7;
+inline constexpr double kOccluded = 27.5;
+inline constexpr double kConnect = 39.3;
 inline constexpr double kPixel = 0.0;
 
 }  // namespace vrlis::integration::renderer_work
