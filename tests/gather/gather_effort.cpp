@@ -509,3 +509,29 @@ TEST_CASE("ScoreOctaves: the threshold fits at most the share asked for, one oct
     CHECK(share_from(threshold / 2) > fraction);
   }
 }
+
+// "null: all equal": a null weights pointer compiles (Real comes from the segments) and takes
+// every VRL's weight as 1, the control on and deciding; weights of 3 change the decisions
+// (the comparison can fail).
+TEST_CASE("a null weights pointer gathers as weights of one", "[gather][effort]") {
+  const Setup s = MakeSetup();
+  vrlis::EffortSettings effort;
+  effort.on = true;
+  effort.price = 1e6;
+  auto samples = [&](const Real* weights) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<Real> u(0, 1);
+    std::vector<double> taken;
+    for (int r = 0; r < 50; ++r)
+      vrlis::GatherMediumVrls(s.method, effort, s.camera, s.medium, s.vrls.data(), weights, int(s.vrls.size()),
+                              [&] { return u(rng); },
+                              [&](int i, const vrlis::GatherSample<Real>& g, Real w) { taken.push_back(i + g.weight * w); });
+    return taken;
+  };
+  std::vector<Real> ones(s.vrls.size(), Real(1));
+  const std::vector<double> with_ones = samples(ones.data());
+  REQUIRE(with_ones.size() > 100);
+  CHECK(samples(nullptr) == with_ones);
+  std::fill(ones.begin(), ones.end(), Real(3));
+  CHECK(samples(ones.data()) != with_ones);
+}

@@ -33,6 +33,13 @@
 namespace vrlis {
 namespace detail {
 
+// T where a parameter must not take part in deducing it (so that a null pointer of weights
+// passes: Real comes from the segments).
+template <typename T>
+struct NonDeduced {
+  using type = T;
+};
+
 // Samples of VRLs waiting for their batched gather: VRL index, effort weight, numbers.
 template <typename Real, int kUniforms>
 struct GatherBatch {
@@ -106,16 +113,17 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     int n = 1;
     Real weight = 1;
     if (decide) {
+      const double weight_i = weights ? double(weights[i]) : 1;  // null: all equal
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
         if (!tight_taken) {
           bounds(first, block, nullptr, tight), tight_taken = true;
           loop_work += block * bound_work.tight;
         }
-        if (m2 < 0) m2 = usable ? Sqr(double(weights[i]) * double(tight[lane])) : 0;
+        if (m2 < 0) m2 = usable ? Sqr(weight_i * double(tight[lane])) : 0;
         return m2;
       };
-      double demand = EffortDemand(effort, usable ? Sqr(double(weights[i]) * double(quick[lane])) : 0);
+      double demand = EffortDemand(effort, usable ? Sqr(weight_i * double(quick[lane])) : 0);
       if (demand > effort.floor) demand = EffortDemand(effort, predicted());
       const double q = EffortClamp(effort, demand);  // overall; q / rate within a taken call
       if constexpr (kPolicy) model = ChooseEffortModel(effort, demand);
@@ -166,7 +174,8 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 // is step one, the gathers' MarginalFitScores.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
-                      const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,
+                      const Medium<Real>& medium, const VrlSegment<Real>* vrls,
+                      const typename detail::NonDeduced<Real>::type* weights, int count,
                       Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr,
                       ScoreOctaves* marginal_scores = nullptr) {
   const bool valid = Validate(camera) == QueryError::None && Validate(medium) == QueryError::None;
@@ -241,7 +250,8 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
 // the VRL points by `method`'s camera sampler, as GatherMediumVrls.
 template <typename Real, typename Uniform, typename Connect>
 void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<Real> point, Vec3<Real> normal,
-                       const Medium<Real>& medium, const VrlSegment<Real>* vrls, const Real* weights, int count,
+                       const Medium<Real>& medium, const VrlSegment<Real>* vrls,
+                      const typename detail::NonDeduced<Real>::type* weights, int count,
                        Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr) {
   const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
   SegmentSamplers::WithEntry(method, [&](auto entry) {
