@@ -20,7 +20,8 @@ inline constexpr int kEffortModels = 4;
 // worth in gathers: (image cost / image variance) / (cost of one gather), learned by the
 // renderer from earlier passes only (a decision that saw the current pass would bias it).
 // With `on` false, or no price learned yet (price not positive and finite), every gather is
-// taken once with weight 1, exactly as without the control.
+// taken once with weight 1, as without the control (a deciding call still draws a number per
+// VRL for it: the same image in distribution, not bit for bit; docs/porting.md#the-fast-path).
 struct EffortSettings {
   bool on = false;
   double price = 0;
