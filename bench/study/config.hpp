@@ -49,7 +49,7 @@ struct Config {
     const auto& m = query.medium;
     MediumGatherQuery<Other> q{{v(c.origin), v(c.dir), Other(c.tmin), Other(c.tmax)},
                                {v(l.origin), v(l.dir), Other(l.length)},
-                               {Other(m.g), Other(m.sigma_s), Other(m.sigma_t)}};
+                               Medium<Other>::FromScatteringExtinction(Other(m.g), Other(m.sigma_s), Other(m.sigma_t))};
     return {q, Other(xi_vrl), Other(xi_cam)};
   }
 };
@@ -77,7 +77,7 @@ inline Config<double> RandomConfig(Rng& rng, double g) {
   vrl.origin = anchor + rng.log_uniform(0.01, 3) * mfp * rng.direction();
   vrl.dir = rng.direction();
   vrl.length = rng.log_uniform(0.25, 20) * mfp;
-  c.query.medium = {g, 0.7 * sigma_t, sigma_t};
+  c.query.medium = Medium<double>::FromScatteringExtinction(g, 0.7 * sigma_t, sigma_t);
   c.xi_vrl = rng.uniform();
   c.xi_cam = rng.uniform();
   return c;

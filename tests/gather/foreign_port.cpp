@@ -59,13 +59,16 @@ using tinyvrl::Vec;
 
 const float* const kNoWeights = nullptr;  // the effort control's, unused with it off
 
-// How the port turns the renderer's medium into vrlis's: by name (the port), or positionally
-// (the misfill the named factories exist for).
+// How the port turns the renderer's medium into vrlis's: by name (the port), or as the
+// positional misfill {g, sigma_a, sigma_s} read as {g, sigma_s, sigma_t}, which no longer
+// compiles and is spelled here by the factory it would have meant.
 using MakeMedium = vrlis::Medium<float> (*)(double g, double sigma_a, double sigma_s);
 vrlis::Medium<float> Named(double g, double sigma_a, double sigma_s) {
   return vrlis::Medium<float>::FromAbsorptionScattering(float(g), float(sigma_a), float(sigma_s));
 }
-vrlis::Medium<float> Positional(double g, double sigma_a, double sigma_s) { return {float(g), float(sigma_a), float(sigma_s)}; }
+vrlis::Medium<float> Positional(double g, double sigma_a, double sigma_s) {
+  return vrlis::Medium<float>::FromScatteringExtinction(float(g), float(sigma_a), float(sigma_s));
+}
 
 // The port: RGB radiance at ray.o from every beam scattered on [tmin, tmax]. Sampling uses
 // the channels' mean medium; each channel weighs the same sample with its own coefficients.

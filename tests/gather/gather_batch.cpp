@@ -154,8 +154,10 @@ void BatchIsOneAtATime(bool widest) {
   std::uniform_real_distribution<Real> uniform(0, 1);
   // g > 0; g < 0 in a denser medium (the segment lobe peaks at the far pole, and FullProduct's
   // fit splits where it meets the transmittance); g = 0 (flat lobes: no splits, no Cauchys).
-  const vrlis::Medium<Real> media[] = {{Real(0.6), Real(0.4), Real(0.5)}, {Real(-0.7), Real(0.8), Real(1.5)},
-                                       {Real(0), Real(0.4), Real(0.5)}};
+  using M = vrlis::Medium<Real>;
+  const M media[] = {M::FromScatteringExtinction(Real(0.6), Real(0.4), Real(0.5)),
+                     M::FromScatteringExtinction(Real(-0.7), Real(0.8), Real(1.5)),
+                     M::FromScatteringExtinction(Real(0), Real(0.4), Real(0.5))};
   for (const vrlis::Medium<Real>& medium : media)
     for (vrlis::VrlChoice one : vrlis::kVrlSamplers)
       for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
@@ -213,7 +215,7 @@ template <typename Real>
 void SurfaceBatchIsOneAtATime(bool widest) {
   std::mt19937 rng(31);
   std::uniform_real_distribution<Real> uniform(0, 1);
-  const vrlis::Medium<Real> medium{Real(0.6), Real(0.4), Real(0.5)};
+  const auto medium = vrlis::Medium<Real>::FromScatteringExtinction(Real(0.6), Real(0.4), Real(0.5));
   const vrlis::Vec3<Real> point{0, 0, -2}, normal = vrlis::Normalize(vrlis::Vec3<Real>{Real(0.3), Real(-0.2), Real(-1)});
   for (vrlis::SegmentChoice method : vrlis::kSegmentSamplers) {
     int contributing = 0, compared = 0;

@@ -32,7 +32,7 @@ using Real = float;
 
 struct Setup {
   vrlis::RaySegment<Real> camera{{0, 0, 0}, {0, 0, -1}, Real(0.5), Real(6)};
-  vrlis::Medium<Real> medium{Real(0.3), Real(0.5), Real(0.8)};
+  vrlis::Medium<Real> medium = vrlis::Medium<Real>::FromScatteringExtinction(Real(0.3), Real(0.5), Real(0.8));
   std::vector<vrlis::VrlSegment<Real>> vrls;
   std::vector<Real> weights;
   vrlis::GatherSamplers method{};
@@ -345,7 +345,7 @@ TEST_CASE("an effort model replaces auto's rule and no other sampler", "[gather]
 // samplers leave both 0, and auto leaves over_mixture 0 unless the call measures it.
 TEST_CASE("auto's samples estimate equiangular sampling's and the mixture's second moments", "[gather][effort]") {
   Setup s = MakeSetup();
-  s.medium = {Real(0.8), Real(1.5), Real(2)};  // g, sigma_s, sigma_t: long optical depths, a peaked lobe
+  s.medium = vrlis::Medium<Real>::FromScatteringExtinction(Real(0.8), Real(1.5), Real(2));  // long optical depths, a peaked lobe
   vrlis::EffortSettings measure;
   measure.measure_mixture = true;
   using Ratio = Real vrlis::GatherSample<Real>::*;

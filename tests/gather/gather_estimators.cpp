@@ -72,11 +72,13 @@ vrlis::VrlSegment<Real> Vrl(Vec3<double> o, Vec3<double> d, double length) {
 template <typename Real>
 vrlis::MediumGatherQuery<Real> MediumCase(int k) {
   switch (k) {
-    case 0: return {Camera<Real>(4), Vrl<Real>({0.6, -0.4, -1}, {1, 1, -0.5}, 3), {Real(0.7), Real(0.6), Real(1)}};
-    case 1: return {Camera<Real>(12), Vrl<Real>({0.3, 0.2, -2}, {0.1, 0, -1}, 8), {Real(-0.6), Real(0.2), Real(0.35)}};
+    case 0: return {Camera<Real>(4), Vrl<Real>({0.6, -0.4, -1}, {1, 1, -0.5}, 3),
+        vrlis::Medium<Real>::FromScatteringExtinction(Real(0.7), Real(0.6), Real(1))};
+    case 1: return {Camera<Real>(12), Vrl<Real>({0.3, 0.2, -2}, {0.1, 0, -1}, 8),
+        vrlis::Medium<Real>::FromScatteringExtinction(Real(-0.6), Real(0.2), Real(0.35))};
   }
   return {Camera<Real>(std::numeric_limits<Real>::infinity()), Vrl<Real>({-1, 0.5, -3}, {0, 1, 0.3}, 5),
-          {Real(0.5), Real(0.5), Real(0.8)}};
+          vrlis::Medium<Real>::FromScatteringExtinction(Real(0.5), Real(0.5), Real(0.8))};
 }
 
 template <typename Real>
@@ -86,7 +88,8 @@ double MediumIntegral(const vrlis::MediumGatherQuery<Real>& qr) {
                                       std::isfinite(qr.camera.tmax) ? double(qr.camera.tmax) : kInf},
                                      {{qr.vrl.origin.x, qr.vrl.origin.y, qr.vrl.origin.z},
                                       {qr.vrl.dir.x, qr.vrl.dir.y, qr.vrl.dir.z}, qr.vrl.length},
-                                     {qr.medium.g, qr.medium.sigma_s, qr.medium.sigma_t}};
+                                     vrlis::Medium<double>::FromScatteringExtinction(qr.medium.g, qr.medium.sigma_s,
+                                                                                     qr.medium.sigma_t)};
   return Integrate([&](double v) {
     return Integrate([&](double t) { return vrlis::MediumGatherIntegrand(q, t, v); }, q.camera.tmin, q.camera.tmax);
   }, 0.0, q.vrl.length);
@@ -143,10 +146,13 @@ template <typename Real>
 vrlis::SurfaceGatherQuery<Real> SurfaceCase(int k) {
   Vec3<Real> p{0, -1, -2}, n{0, 1, 0};
   switch (k) {
-    case 0: return {p, n, Vrl<Real>({-1, 0.5, -2.5}, {1, 0.2, 0}, 3), {Real(0.8), Real(0.5), Real(0.7)}};
-    case 1: return {p, n, Vrl<Real>({0.5, 3, -2}, {0, -1, 0.1}, 4.5), {Real(-0.5), Real(0.3), Real(0.4)}};
+    case 0: return {p, n, Vrl<Real>({-1, 0.5, -2.5}, {1, 0.2, 0}, 3),
+        vrlis::Medium<Real>::FromScatteringExtinction(Real(0.8), Real(0.5), Real(0.7))};
+    case 1: return {p, n, Vrl<Real>({0.5, 3, -2}, {0, -1, 0.1}, 4.5),
+        vrlis::Medium<Real>::FromScatteringExtinction(Real(-0.5), Real(0.3), Real(0.4))};
   }
-  return {p, n, Vrl<Real>({-3, -0.5, -2}, {1, 0, 0}, 6), {Real(0.3), Real(0.9), Real(1.2)}};
+  return {p, n, Vrl<Real>({-3, -0.5, -2}, {1, 0, 0}, 6),
+      vrlis::Medium<Real>::FromScatteringExtinction(Real(0.3), Real(0.9), Real(1.2))};
 }
 
 template <typename Real>
@@ -169,7 +175,8 @@ void PointLightGatherIsUnbiased(const char* type) {
   const Vec3<Real> lights[3] = {{Real(0.5), 0, -2}, {0, Real(0.05), -6}, {2, 1, Real(0.5)}};
   const double tmax[3] = {4, 10, kInf};
   for (int k = 0; k < 3; ++k) {
-    vrlis::PointLightGatherQuery<Real> q{Camera<Real>(tmax[k]), lights[k], {Real(k == 1 ? -0.8 : 0.6), Real(0.4), Real(0.6)}};
+    vrlis::PointLightGatherQuery<Real> q{Camera<Real>(tmax[k]), lights[k],
+        vrlis::Medium<Real>::FromScatteringExtinction(Real(k == 1 ? -0.8 : 0.6), Real(0.4), Real(0.6))};
     double integral = Integrate([&](double t) { return double(vrlis::PointLightGatherIntegrand(q, Real(t))); },
                                 double(q.camera.tmin), tmax[k]);
     for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) {

@@ -21,7 +21,8 @@ struct Mutation {
 
 template <typename Real>
 vrlis::MediumGatherQuery<Real> Good() {
-  return {{{0, 0, 0}, {0, 0, -1}, 0, 10}, {{1, 0, -3}, {0, 1, 0}, 5}, {Real(0.5), Real(0.3), Real(0.4)}};
+  return {{{0, 0, 0}, {0, 0, -1}, 0, 10}, {{1, 0, -3}, {0, 1, 0}, 5},
+      vrlis::Medium<Real>::FromScatteringExtinction(Real(0.5), Real(0.3), Real(0.4))};
 }
 
 template <typename Real>
@@ -78,7 +79,8 @@ TEST_CASE("medium gather queries: each bad input has its error and contributes n
 
 TEST_CASE("surface and point-light gather queries are validated") {
   using E = vrlis::QueryError;
-  vrlis::SurfaceGatherQuery<float> s{{0, -1, -2}, {0, 1, 0}, {{-1, 0.5f, -2.5f}, {1, 0, 0}, 3}, {0.5f, 0.3f, 0.4f}};
+  vrlis::SurfaceGatherQuery<float> s{{0, -1, -2}, {0, 1, 0}, {{-1, 0.5f, -2.5f}, {1, 0, 0}, 3},
+      vrlis::Medium<float>::FromScatteringExtinction(0.5f, 0.3f, 0.4f)};
   CHECK(vrlis::Validate(s) == E::None);
   auto bad_normal = s;
   bad_normal.normal = {0, 0.5f, 0};
@@ -88,7 +90,8 @@ TEST_CASE("surface and point-light gather queries are validated") {
   CHECK(vrlis::Validate(nan_point) == E::NonFinite);
   CHECK(vrlis::SampleSurfaceGather(vrlis::kSegmentSamplers[1], nan_point, 0.5f).weight == 0);
 
-  vrlis::PointLightGatherQuery<float> p{{{0, 0, 0}, {0, 0, -1}, 0, 5}, {0.5f, 0, -2}, {0.5f, 0.3f, 0.4f}};
+  vrlis::PointLightGatherQuery<float> p{{{0, 0, 0}, {0, 0, -1}, 0, 5}, {0.5f, 0, -2},
+      vrlis::Medium<float>::FromScatteringExtinction(0.5f, 0.3f, 0.4f)};
   CHECK(vrlis::Validate(p) == E::None);
   auto reversed = p;
   reversed.camera.tmax = -1;

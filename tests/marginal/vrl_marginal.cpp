@@ -68,7 +68,7 @@ template <typename Real>
 MediumGatherQuery<Real> Query(const Config& c) {
   return {{Cast<Real>(c.xc), Cast<Real>(c.wc), Real(0), Real(c.s)},
           {Cast<Real>(c.xl), Cast<Real>(c.wl), Real(c.t)},
-          {Real(c.g), Real(c.sigma_t), Real(c.sigma_t)}};
+          vrlis::Medium<Real>::FromScatteringExtinction(Real(c.g), Real(c.sigma_t), Real(c.sigma_t))};
 }
 
 double Hg(double g, V3 a, V3 b) {  // HG(g, a . b) for unit a, b, exact near both peaks
@@ -346,7 +346,7 @@ TEMPLATE_TEST_CASE("VrlMarginal: degenerate and invalid input", "", float, doubl
   MediumGatherQuery<Real> base;
   base.vrl = {{0, 1, 0}, {1, 0, 0}, 2};
   base.camera = {{0, 0, 0}, {0, 0, 1}, 0, 3};
-  base.medium = {Real(0.7), 1, 1};
+  base.medium = vrlis::Medium<Real>::FromScatteringExtinction(Real(0.7), 1, 1);
   check_finite(VrlMarginal<Real>(base), 0, 2, true);
 
   SECTION("parallel lines") {

@@ -33,15 +33,21 @@ bool SameVrl(const VrlSegment<Real>& a, const VrlSegment<Real>& b) {
 }
 
 // A homogeneous medium: Henyey-Greenstein asymmetry, scattering and extinction coefficients.
-// Build it by name: renderers store (sigma_a, sigma_s) or (sigma_s, sigma_t), and a
-// positional {g, sigma_a, sigma_s} would be a valid medium with the wrong extinction. (The
-// aggregate stays for code that fills the fields by name.)
+// Built by name only: renderers store (sigma_a, sigma_s) or (sigma_s, sigma_t), and a
+// positional {g, sigma_a, sigma_s} was a valid medium with the wrong extinction; it no longer
+// compiles. Default: g = 0 and no medium (every coefficient 0).
 template <typename Real>
 struct Medium {
   Real g = 0, sigma_s = 0, sigma_t = 0;
 
-  static Medium FromAbsorptionScattering(Real g, Real sigma_a, Real sigma_s) { return {g, sigma_s, sigma_a + sigma_s}; }
-  static Medium FromScatteringExtinction(Real g, Real sigma_s, Real sigma_t) { return {g, sigma_s, sigma_t}; }
+  Medium() noexcept {}  // user-provided: not an aggregate, so no positional braces
+  static Medium FromAbsorptionScattering(Real g, Real sigma_a, Real sigma_s) {
+    return Medium(g, sigma_s, sigma_a + sigma_s);
+  }
+  static Medium FromScatteringExtinction(Real g, Real sigma_s, Real sigma_t) { return Medium(g, sigma_s, sigma_t); }
+
+ private:
+  Medium(Real g_, Real sigma_s_, Real sigma_t_) noexcept : g(g_), sigma_s(sigma_s_), sigma_t(sigma_t_) {}
 };
 
 // Medium to medium: light scattered at a VRL point, again at a camera-segment point, then

@@ -54,7 +54,7 @@ inline QueryRecord Unflatten(const std::array<float, kFloats>& f) {
   QueryRecord r;
   r.query.camera = {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}, f[6], f[7]};
   r.query.vrl = {{f[8], f[9], f[10]}, {f[11], f[12], f[13]}, f[14]};
-  r.query.medium = {f[15], f[16], f[17]};
+  r.query.medium = vrlis::Medium<float>::FromScatteringExtinction(f[15], f[16], f[17]);
   r.weight = f[18];
   return r;
 }
