@@ -102,8 +102,9 @@ void RegisterWork() {
     }
   for (bool decided : {false, true})
     for (SegmentChoice method : kSegmentSamplers)
-      benchmark::RegisterBenchmark(((decided ? "Work/call-decided/" : "Work/call/") + std::string(method.name())).c_str(),
-                                   [method, decided](benchmark::State& s) { Call(s, method, decided); });
+      benchmark::RegisterBenchmark(
+          ((decided ? "Work/call-decided/" : "Work/call/") + std::string(method.name())).c_str(),
+          [method, decided](benchmark::State& s) { Call(s, method, decided); });
   benchmark::RegisterBenchmark("Work/mixture-density/measured", [](benchmark::State& s) { MixtureDensity(s, true); });
   benchmark::RegisterBenchmark("Work/mixture-density/plain", [](benchmark::State& s) { MixtureDensity(s, false); });
 }

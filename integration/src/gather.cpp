@@ -109,13 +109,8 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
       auto measure = [&](int i, const vrlis::GatherSample<float>& s, float) {
         pair_sum += chunk[i].flux * (Connect(scene, s) * share(s));
       };
-      double pair_rays = 0;
-      {
-        WorkScope scope(&pair_rays);
-        gather_chunk(*pair, same, segments, weights, n, measure, &pair_tally);
-      }
-      ThreadWork() -= pair_rays;  // for the statistics alone: not the pixel's work
-      pair_work += pair_rays;
+      WorkScope scope(&pair_work, false);  // for the statistics alone: not the pixel's work
+      gather_chunk(*pair, same, segments, weights, n, measure, &pair_tally);
     }
     for (int i = 0; split && i < n; ++i)
       if (samples[i] > 1) {

@@ -81,17 +81,19 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     medium_effort.marginal_threshold = marginal_scores_.Threshold(transport.marginal_fraction);
   tbb::enumerable_thread_specific<vrlis::ScoreOctaves> pass_scores;
   const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
+  // A pixel's radiance and its counted work, from zero (the pixel's own, not its thread's).
+  auto counted = [&](std::size_t i, auto&& radiance) {
+    WorkScope scope(&pixel_work[i]);
+    ThreadWork() += renderer_work::kPixel;
+    return radiance();
+  };
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     GatherCount count;
     if (scored) count.marginal_scores = &pass_scores.local();
     const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
     if (!effort.on) {
-      Spectrum L;
-      {
-        WorkScope scope(&pixel_work[i]);
-        ThreadWork() += renderer_work::kPixel;
-        L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort);
-      }
+      const Spectrum L = counted(
+          i, [&] { return VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort); });
       gathers.fetch_add(count.Total(), std::memory_order_relaxed);
       return L;
     }
@@ -122,12 +124,9 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
       pair.decide = pair.measure_mixture = false;
       pair.model = vrlis::EffortModel::Accurate;
     }
-    Spectrum L;
-    {
-      WorkScope scope(&pixel_work[i]);  // from zero, so the pixel's own (not its thread's)
-      ThreadWork() += renderer_work::kPixel;
-      L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
-    }
+    const Spectrum L = counted(i, [&] {
+      return VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
+    });
     gathers.fetch_add(count.Total(), std::memory_order_relaxed);
     count.medium_effort.pair_pixel = paired ? 1 : 0;
     learned->medium[i] = count.medium_effort;

@@ -32,17 +32,20 @@ constexpr std::array<double, SegmentSamplers::kCount> SampleWorkTable() {
   }
   return table;
 }
+// Built at compile time: a gather's batch looks its sampler up by index, not by name.
+inline constexpr auto kMediumSampleWork = SampleWorkTable<false>();
+inline constexpr auto kSurfaceSampleWork = SampleWorkTable<true>();
 }  // namespace detail
 
 // One sample of the batched medium-to-medium gather with this camera sampler after VrlPoint;
 // VrlMarginal's fit, where a sample takes it, costs MarginalFitWork more.
 constexpr double MediumSampleWork(SegmentChoice camera) {
-  return detail::SampleWorkTable<false>()[static_cast<std::size_t>(camera.index())];
+  return detail::kMediumSampleWork[static_cast<std::size_t>(camera.index())];
 }
 constexpr double MarginalFitWork() { return work_costs::kMarginalFit; }
 // One sample of the batched medium-to-surface gather with this sampler.
 constexpr double SurfaceSampleWork(SegmentChoice sampler) {
-  return detail::SampleWorkTable<true>()[static_cast<std::size_t>(sampler.index())];
+  return detail::kSurfaceSampleWork[static_cast<std::size_t>(sampler.index())];
 }
 
 }  // namespace vrlis

@@ -170,8 +170,7 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
 // tally, if set, adds the predictions (decided gathers only) and the call's counted work;
-// marginal_scores, if set and VrlMarginal
-// is step one, the gathers' MarginalFitScores.
+// marginal_scores, if set and VrlMarginal is step one, the gathers' MarginalFitScores.
 template <typename Real, typename Uniform, typename Connect>
 void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
                       const Medium<Real>& medium, const VrlSegment<Real>* vrls,
@@ -206,7 +205,8 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
     }
     detail::GatherEachVrl<2, policy>(
         effort, vrls, weights, count, valid, uniform,
-        detail::BoundWork{work_costs::kMediumQuickBound, work_costs::kMediumTightBound},
+        // The tight bounds taken with the scores are counted there.
+        detail::BoundWork{work_costs::kMediumQuickBound, scored ? 0 : work_costs::kMediumTightBound},
         [&](int first, int n, Real* quick, Real* tight) {
           if (scored && tight) {  // taken with the scores
             std::copy(bound + first, bound + first + n, tight);
@@ -251,7 +251,7 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
 template <typename Real, typename Uniform, typename Connect>
 void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<Real> point, Vec3<Real> normal,
                        const Medium<Real>& medium, const VrlSegment<Real>* vrls,
-                      const typename detail::NonDeduced<Real>::type* weights, int count,
+                       const typename detail::NonDeduced<Real>::type* weights, int count,
                        Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr) {
   const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
   SegmentSamplers::WithEntry(method, [&](auto entry) {

@@ -19,28 +19,28 @@
 namespace vrlis::integration {
 
 // What a pixel's gathers tell the price in a pass (every "work" counted, work.hpp): the
-// gathers taken, the work of the calls that took them, the predicted second moments (vrlis::EffortTally) and the samples'
-// own estimate of them. Of the gathers split into several samples: the sum of their within
-// variances and of their second moments, each estimated from its own samples (the share
-// splitting reduces). Of the calls (vrlis::EffortCallRate): how many, the sum of their rates
-// and of rate x (contribution to the pixel)^2, an estimate of their second moments had each
-// been taken (docs/maths.md#effort-calls). Of the work, that of sampling (the rest is
-// the decisions'). Of the samples `auto` took by its rule, the sum of (effort weight x
-// contribution)^2 x (GatherSample::over_equiangular - 1): an estimate of the variance the
-// pixel would gain had they been taken with equiangular sampling; the same with
-// over_mixture, of the rule's samples in calls that measured it (mixture_measured of them);
-// and the samples and sampling work of the rule (its work from the calls that did not
-// measure), the cheapest model and the mixture (docs/maths.md#effort-cheapest). Of
-// the calls: how many decided their gathers (vrlis::EffortSettings::decide) and the VRLs all of
-// them considered, taken or not. Of the decided gathers' samples (effort weight w, contribution
-// y), the sums of w y^2 (w - 1) over the rouletted (w > 1) and the split (w < 1): estimates of
-// the variance the decisions add and remove against every gather taken once
-// (docs/maths.md#effort-decide). `measured` counts the decided calls' samples only, as
-// `predicted` does. Of the calls paired with a statistics-only call of the same VRLs under
-// the accurate model (GatherMediumToMedium's `pair`): that call's samples and their work,
-// its work (not the pixel's), and how much it would have changed the pixel's value
-// (docs/maths.md#effort-accurate); of a pixel, whether the renderer paired its calls (1) or
-// not (0).
+// gathers taken, the work of the calls that took them, the predicted second moments
+// (vrlis::EffortTally) and the samples' own estimate of them. Of the gathers split into
+// several samples: the sum of their within variances and of their second moments, each
+// estimated from its own samples (the share splitting reduces). Of the calls
+// (vrlis::EffortCallRate): how many, the sum of their rates and of rate x (contribution to the
+// pixel)^2, an estimate of their second moments had each been taken
+// (docs/maths.md#effort-calls). Of the work, that of sampling (the rest is the decisions'). Of
+// the samples `auto` took by its rule, the sum of (effort weight x contribution)^2 x
+// (GatherSample::over_equiangular - 1): an estimate of the variance the pixel would gain had
+// they been taken with equiangular sampling; the same with over_mixture, of the rule's samples
+// in calls that measured it (mixture_measured of them); and the samples and sampling work of
+// the rule (its work from the calls that did not measure), the cheapest model and the mixture
+// (docs/maths.md#effort-cheapest). Of the calls: how many decided their gathers
+// (vrlis::EffortSettings::decide) and the VRLs all of them considered, taken or not. Of the
+// decided gathers' samples (effort weight w, contribution y), the sums of w y^2 (w - 1) over
+// the rouletted (w > 1) and the split (w < 1): estimates of the variance the decisions add and
+// remove against every gather taken once (docs/maths.md#effort-decide). `measured` counts the
+// decided calls' samples only, as `predicted` does. Of the calls paired with a statistics-only
+// call of the same VRLs under the accurate model (GatherMediumToMedium's `pair`): that call's
+// samples and their work, its work (not the pixel's), and how much it would have changed the
+// pixel's value (docs/maths.md#effort-accurate); of a pixel, whether the renderer paired its
+// calls (1) or not (0).
 struct EffortStats {
   std::uint64_t gathers = 0;
   double work = 0, sample_work = 0, predicted = 0, measured = 0;

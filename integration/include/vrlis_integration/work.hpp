@@ -15,15 +15,18 @@ inline double& ThreadWork() {
 }
 
 // Adds the work counted on this thread during its scope to *work, if set. The scope counts
-// from zero and hands its count on to the enclosing one at its end: a difference of two
-// readings would round by what the thread did before, and images would depend on it.
+// from zero and hands its count on to the enclosing one at its end (unless `kept` is false:
+// work that is not the enclosing scope's): a difference of two readings would round by what
+// the thread did before, and images would depend on it.
 class WorkScope {
  public:
-  explicit WorkScope(double* work) : work_(work), outer_(ThreadWork()) { ThreadWork() = 0; }
+  explicit WorkScope(double* work, bool kept = true) : work_(work), outer_(ThreadWork()), kept_(kept) {
+    ThreadWork() = 0;
+  }
   ~WorkScope() {
     const double inner = ThreadWork();
     if (work_) *work_ += inner;
-    ThreadWork() = outer_ + inner;
+    ThreadWork() = kept_ ? outer_ + inner : outer_;
   }
   WorkScope(const WorkScope&) = delete;
   WorkScope& operator=(const WorkScope&) = delete;
@@ -31,6 +34,7 @@ class WorkScope {
  private:
   double* work_;
   double outer_;
+  bool kept_;
 };
 
 }  // namespace vrlis::integration
