@@ -4,9 +4,9 @@
 //       along camera rays through the image; occlusion between points on two of them (the
 //       camera gathers' connections join such points)
 //   Work/renderer/call/<scene>   GatherMediumToMedium over a pass's VRLs along camera segments,
-//       the control off (one sample per VRL), per VRL; the counter `counted` is the work
-//       already counted (the library's tally, the rays): the rest is the integration's own per
-//       sample it connects
+//       the control off (one sample per VRL), per VRL; the counter `counted` is the work its
+//       record counts less kConnect (the library's operations, each visit's occlusion ray): the
+//       rest is the integration's own per sample it connects
 //   Work/renderer/pixel/<scene>  a 32 x 32 pass of the scene's default transport, the control
 //       off, per pixel; counters `counted` and `vrls` (VRLs gathered per pixel): the rest, less
 //       the calls' own per sample, is the pixel's (camera path, VPLs, single scattering, film)
@@ -86,17 +86,21 @@ void Call(benchmark::State& state, const char* name) {
   }
   if (segments.empty() || vrls.empty()) return state.SkipWithError("no camera segment in the medium, or no VRL");
   vrlis::integration::Rng rng(1, 0, 0, StreamPurpose::Camera);
-  double counted = 0;
+  vrlis::PixelRecord record;  // the calls count their work here, their visits at kVisitWork
+  GatherOptions options;
+  options.effort.medium = pool.built->transport.effort;  // off in every scene's transport
+  options.effort.visit_work = kVisitWork;
+  options.effort.record = &record;
   size_t i = 0;
   for (auto _ : state) {
-    WorkScope scope(&counted);
-    benchmark::DoNotOptimize(GatherMediumToMedium(pool.built->transport.sampling, scene, segments[i], vrls, rng));
+    benchmark::DoNotOptimize(
+        GatherMediumToMedium(pool.built->transport.sampling, scene, segments[i], vrls, rng, Spectrum(1.f), options));
     i = i + 1 == segments.size() ? 0 : i + 1;
   }
   const double items = double(state.iterations()) * double(vrls.size());
   state.SetItemsProcessed(static_cast<int64_t>(items));
   // The work counted without the constant this measures.
-  state.counters["counted"] = counted / items - renderer_work::kConnect;
+  state.counters["counted"] = record.medium.work / items - renderer_work::kConnect;
 }
 
 void Pixel(benchmark::State& state, const char* name) {

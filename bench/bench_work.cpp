@@ -63,9 +63,10 @@ void Call(benchmark::State& state, SegmentChoice method, bool decided) {
   for (auto _ : state) {
     const MediumGatherQuery<float>& q = pools.configs[first].query;
     float sum = 0;
-    GatherMediumVrls(samplers, effort, q.camera, q.medium, &vrls[first], weights.data(),
-                     kVrls, [&] { return u = u + 0.618034f >= 1 ? u - 0.381966f : u + 0.618034f; },
-                     [&](int, const GatherSample<float>& s, float w) { sum += w * s.weight; });
+    GatherMediumVrls(samplers, q.camera, q.medium, &vrls[first], kVrls,
+                     [&] { return u = u + 0.618034f >= 1 ? u - 0.381966f : u + 0.618034f; },
+                     [&](int, const GatherSample<float>& s, float w) { sum += w * s.weight; },
+                     EffortCall<float>{effort, weights.data()});
     benchmark::DoNotOptimize(sum);
     first = first + 2 * kVrls > vrls.size() ? 0 : first + kVrls;
   }

@@ -110,6 +110,9 @@ inline constexpr double kSurfaceTightBound = {c['kSurfaceTightBound']:.2f};
 inline constexpr double kVrl = {c['kVrl']:.2f};
 // A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
 inline constexpr double kDecision = {c['kDecision']:.2f};
+// A visit of the example renderer, the default of a renderer that counts none of its own: an
+// occlusion ray and the connection around it (Work/ray/occluded/ and Work/renderer/call/).
+inline constexpr double kVisit = {c['kOccluded'] + c['kConnect']:.1f};
 
 }}  // namespace vrlis::work_costs
 """

@@ -20,7 +20,7 @@ GatherWeightsResult MeasureGatherWeights(const GatherWeightsConfig& config) {
   vrlis::integration::WeightLog log;
   scene.settings.transport.weight_log = &log;
   PassRenderer recorded(scene.built.scene, scene.settings);
-  vrlis::integration::EffortPrice price(config.width, config.height);
+  vrlis::EffortPrice price(config.width, config.height);
   vrlis::ScoreOctaves marginal_scores;  // which gathers VrlMarginal fits, learned like the price
   GatherWeightsResult r;
   r.config = config;
@@ -28,7 +28,7 @@ GatherWeightsResult MeasureGatherWeights(const GatherWeightsConfig& config) {
   double pixel_sum = 0;
   for (int pass = 0; pass < config.passes; ++pass) {
     double seconds = 0;
-    PassRenderer& renderer = pass < vrlis::integration::EffortPrice::kMinPasses ? first : recorded;
+    PassRenderer& renderer = pass < vrlis::EffortPrice::kMinPasses ? first : recorded;
     const vrlis::integration::Film film =
         renderer.Render(config.method, config.seed, static_cast<std::uint64_t>(pass), &seconds, &price, &marginal_scores);
     r.seconds += seconds;

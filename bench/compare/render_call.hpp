@@ -63,7 +63,7 @@ class PassRenderer {
   // `marginal_scores` likewise which gathers VrlMarginal fits (without it every pass is a
   // first pass and fits every gather).
   vrlis::integration::Film Render(const Method& method, std::uint64_t seed, std::uint64_t pass, double* seconds,
-                                  vrlis::integration::EffortPrice* price = nullptr,
+                                  vrlis::EffortPrice* price = nullptr,
                                   vrlis::ScoreOctaves* marginal_scores = nullptr) {
     vrlis::integration::RenderSettings settings = settings_;
     settings.transport.sampling = method.sampler;

@@ -49,7 +49,7 @@ struct Runner {
   PassStatistics all;
   std::vector<double> seconds;  // per replicate
   std::vector<Progression> progression;
-  std::vector<vrlis::integration::EffortPrice> prices;  // per replicate, with the effort control on
+  std::vector<vrlis::EffortPrice> prices;  // per replicate, with the effort control on
   std::vector<vrlis::ScoreOctaves> marginal_scores;     // per replicate, with VrlMarginal as step one
 
   int per_replicate = 0;  // passes in each replicate
@@ -121,8 +121,8 @@ StudyResult RunStudy(const StudyConfig& config) {
   for (const Method& s : config.samplers)
     runners.push_back({s, std::vector<PassStatistics>(replicates, PassStatistics(values)), PassStatistics(values),
                        std::vector<double>(replicates, 0.0), std::vector<Progression>(replicates),
-                       std::vector<vrlis::integration::EffortPrice>(
-                           replicates, vrlis::integration::EffortPrice(config.width, config.height)),
+                       std::vector<vrlis::EffortPrice>(
+                           replicates, vrlis::EffortPrice(config.width, config.height)),
                        std::vector<vrlis::ScoreOctaves>(replicates)});
 
   // Whole cycles (one pass of every replicate) so that all replicates of a sampler hold the

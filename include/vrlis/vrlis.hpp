@@ -24,6 +24,9 @@
 #include "effort/bounds.hpp"
 #include "effort/marginal_fits.hpp"
 #include "effort/work.hpp"
+#include "effort/record.hpp"
+#include "effort/call.hpp"
+#include "effort/price.hpp"
 #include "gather/gather_vrls.hpp"
 #include "xyz.hpp"
 

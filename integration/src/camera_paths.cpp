@@ -7,34 +7,18 @@
 #include "vrlis_integration/path_tracer.hpp"
 
 namespace vrlis::integration {
-namespace {
-
-// One call of a gather over `vrls` VRLs: its rate and its contribution to the pixel squared,
-// weighted by the rate (an estimate of the call's second moment had it been taken,
-// docs/maths.md#effort-calls), and whether it decided its gathers.
-void AddCall(const vrlis::EffortSettings& effort, std::size_t vrls, Spectrum contribution, EffortStats* stats) {
-  const double rate = vrlis::EffortCallRate(effort);
-  stats->calls += 1;
-  stats->decided += effort.decide ? 1 : 0;
-  stats->vrls += double(vrls);
-  stats->call_rate += rate;
-  stats->call_m2 += rate * contribution.MeanSquare();
-}
-
-}  // namespace
 
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std::vector<Vrl>& vrls,
-                     const VplSet& vpls, Ray ray,
-                     Rng& rng, GatherCount* count, const vrlis::EffortSettings& medium_effort,
-                     const vrlis::EffortSettings& surface_effort, double remainder_rate,
-                     const vrlis::EffortSettings* medium_pair) {
+                     const VplSet& vpls, Ray ray, Rng& rng, const GatherOptions& gathers) {
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
-  RemainderStats* remainder_stats = medium_effort.on ? &count->remainder : nullptr;
+  const vrlis::PixelEffort& effort = gathers.effort;
+  const double remainder_rate = effort.remainder_rate;
+  vrlis::RemainderRecord* remainder_stats = effort.medium.on ? &effort.record->remainder : nullptr;
   // The VPLs seen from a camera segment are unpriced; theirs is a point-and-line query like the
   // medium-to-surface gather's, and they take that gather's model (auto's rule without one).
   const vrlis::SegmentChoice vpl_sampler =
-      vrlis::SegmentSamplerFor(tr.sampling.segment, vrlis::ChooseEffortModel(surface_effort, 1));
+      vrlis::SegmentSamplerFor(tr.sampling.segment, vrlis::ChooseEffortModel(effort.surface, 1));
   Spectrum L, beta(1.f);
   for (int depth = 0; depth < tr.max_depth; ++depth) {
     SurfaceHit hit;
@@ -42,21 +26,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
     if (!iv.Empty()) {
       CameraSegment seg{ray, iv};
-      if (tr.medium_to_medium) {
-        const vrlis::EffortSettings& effort = medium_effort;
-        EffortStats& stats = count->medium_effort;
-        const std::uint64_t before = stats.gathers;
-        Spectrum gathered;
-        {
-          WorkScope scope(effort.on ? &stats.work : nullptr);
-          gathered = beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, tr.query_log, beta, effort,
-                                                 effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound,
-                                                 medium_pair, count->marginal_scores);
-        }
-        if (effort.on) AddCall(effort, vrls.size(), gathered, &stats);
-        L += gathered;
-        count->medium_to_medium += effort.on ? stats.gathers - before : vrls.size();
-      }
+      if (tr.medium_to_medium) L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, beta, gathers);
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
       if (tr.surface_to_medium) L += beta * GatherVpls(vpl_sampler, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
       if (tr.indirect)  // a medium vertex by free flight, continued by path tracing
@@ -83,20 +53,8 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     }
     // The first diffuse vertex ends the camera chain.
     Vec3f nf = Dot(hit.n, ray.d) < 0 ? hit.n : -hit.n;
-    if (tr.medium_to_surface && m.Present()) {
-      const vrlis::EffortSettings& effort = surface_effort;
-      EffortStats& stats = count->surface_effort;
-      const std::uint64_t before = stats.gathers;
-      Spectrum gathered;
-      {
-        WorkScope scope(effort.on ? &stats.work : nullptr);
-        gathered = beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta,
-                                                effort, effort.on ? &stats : nullptr, tr.weight_log, tr.vrl_bound);
-      }
-      if (effort.on) AddCall(effort, vrls.size(), gathered, &stats);
-      L += gathered;
-      count->medium_to_surface += effort.on ? stats.gathers - before : vrls.size();
-    }
+    if (tr.medium_to_surface && m.Present())
+      L += beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta, gathers);
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
     if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_samples, tr.vpl_bound, rng);
     if (tr.indirect)

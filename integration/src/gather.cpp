@@ -53,94 +53,41 @@ namespace {
 
 // The library's one-call gathers over VRLs [first, last), kChunk at a time (a multiple of
 // the library's batch, so that images do not depend on it): segments and predicted weights
-// on the stack, the scene's visibility as the callback. `effort`: the call's, which says what
-// its statistics measure (whether each gather is decided, whether the mixture is measured).
-// `own`: the gathers' random numbers. `pair`, with stats: each chunk is gathered again under
-// these settings, from the same random numbers, for the statistics alone
-// (EffortStats::pair_delta): its samples are connected, not summed, and the sum and the
-// numbers left for the rest are those of the call without it.
+// on the stack, the scene's visibility as the visitor, which returns its contribution in the
+// price's units (the RMS of the pixel's RGB). The calls count their work into the pixel's
+// record, the visits at renderer_work's constants: the rays the visits trace are not
+// counted again. gather_chunk(call, numbers, segments, n, visit) makes one call.
 constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
 template <typename GatherShareOf, typename GatherChunk>
 Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput,
-                       const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, Rng& own,
-                       GatherShareOf&& share, GatherChunk&& gather_chunk, const vrlis::EffortSettings* pair = nullptr) {
-  const bool decided = effort.on && effort.decide;
-  if (!stats) pair = nullptr;
+                       const GatherOptions& options, bool surface, Rng& own, GatherShareOf&& share,
+                       GatherChunk&& gather_chunk) {
+  const vrlis::PixelEffort& effort = options.effort;
+  const bool pair = options.pair && effort.record;
   Spectrum sum;
-  vrlis::EffortTally tally, pair_tally;
-  EffortStats taken;
-  Spectrum pair_sum;
-  double pair_work = 0, connect_work = 0;  // the pair's, and the occlusion rays of the call's samples
   for (const Vrl* chunk = first; chunk < last; chunk += kChunk) {
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
     float weights[kChunk];  // for decided gathers, and VrlMarginal's choice of fits
-    int samples[kChunk];
-    double sum_y[kChunk], sum_y2[kChunk];  // per VRL, of its samples' unweighted contributions; decided, with stats
-    for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]);
-    for (int i = 0; i < n; ++i) weights[i] = (throughput * chunk[i].flux).Rms();
-    const bool split = stats && decided;  // undecided, every VRL takes one sample
-    if (split)
-      for (int i = 0; i < n; ++i) samples[i] = 0, sum_y[i] = sum_y2[i] = 0;
-    auto connect = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
-      ThreadWork() += renderer_work::kConnect;  // this function's own, beyond its ray
-      Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
+    for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]), weights[i] = (throughput * chunk[i].flux).Rms();
+    auto visit = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
+      const Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
       sum += x;
-      if (weight_log) weight_log->Record(effort_weight, s.weight, (throughput * x).Rms());
-      if (!stats) return;
-      ++taken.gathers;
-      if (!decided && !(s.over_equiangular > 0 || s.over_mixture > 0)) return;  // nothing else to learn from it
-      double y = (throughput * x).Rms() / effort_weight;
-      if (decided) {
-        taken.measured += effort_weight * y * y;
-        (effort_weight > 1 ? taken.roulette_excess : taken.split_excess) += effort_weight * y * y * (effort_weight - 1);
-      }
-      if (s.over_equiangular > 0) taken.cheapest_excess += vrlis::Sqr(effort_weight * y) * (s.over_equiangular - 1);
-      if (s.over_mixture > 0) taken.mixture_excess += vrlis::Sqr(effort_weight * y) * (s.over_mixture - 1);
-      if (split) ++samples[i], sum_y[i] += y, sum_y2[i] += y * y;
+      const float y = (throughput * x).Rms();
+      if (options.weight_log) options.weight_log->Record(effort_weight, s.weight, y);
+      return y;
     };
     Rng same = own;
-    {
-      WorkScope scope(&connect_work);  // the library counts its own work in the tally
-      gather_chunk(effort, own, segments, weights, n, connect, &tally);
-    }
-    if (pair) {
+    WorkScope uncounted(nullptr, false);  // the record counts the call's work
+    gather_chunk(surface ? effort.Surface(weights) : effort.Medium(weights, options.marginal_scores), own, segments, n,
+                 visit);
+    if (pair) {  // for the statistics alone: not summed, and its numbers not the path's
       auto measure = [&](int i, const vrlis::GatherSample<float>& s, float) {
-        pair_sum += chunk[i].flux * (Connect(scene, s) * share(s));
+        return (throughput * chunk[i].flux * (Connect(scene, s) * share(s))).Rms();
       };
-      WorkScope scope(&pair_work, false);  // for the statistics alone: not the pixel's work
-      gather_chunk(*pair, same, segments, weights, n, measure, &pair_tally);
+      gather_chunk(effort.Pair(weights), same, segments, n, measure);
     }
-    for (int i = 0; split && i < n; ++i)
-      if (samples[i] > 1) {
-        double k = samples[i], mean = sum_y[i] / k;
-        taken.split_within += std::max(0.0, (sum_y2[i] - k * mean * mean) / (k - 1));
-        taken.split_second += sum_y2[i] / k;
-      }
-  }
-  ThreadWork() += tally.work;
-  if (stats) {
-    taken.predicted = tally.predicted;
-    taken.sample_work = tally.sample_work + connect_work;
-    constexpr int kRule = static_cast<int>(vrlis::EffortModel::Chosen);
-    constexpr int kCheapest = static_cast<int>(vrlis::EffortModel::Cheapest);
-    constexpr int kMixture = static_cast<int>(vrlis::EffortModel::Mixture);
-    taken.rule_samples = double(tally.model_samples[kRule]);
-    if (!effort.measure_mixture) taken.rule_work = tally.model_work[kRule];  // the measuring's not the rule's
-    taken.cheapest_samples = double(tally.model_samples[kCheapest]);
-    taken.cheapest_work = tally.model_work[kCheapest];
-    taken.mixture_samples = double(tally.model_samples[kMixture]);
-    taken.mixture_work = tally.model_work[kMixture];
-    if (effort.measure_mixture) taken.mixture_measured = taken.rule_samples;
-    if (pair) {
-      constexpr int kAccurate = static_cast<int>(vrlis::EffortModel::Accurate);
-      taken.accurate_samples = double(pair_tally.model_samples[kAccurate]);
-      taken.accurate_work = pair_tally.model_work[kAccurate];
-      taken.pair_delta = throughput * (pair_sum + sum * -1.f);
-      taken.pair_work = pair_work + pair_tally.work;
-    }
-    *stats += taken;
   }
   return sum;
 }
@@ -152,61 +99,50 @@ float GatherShareOf(const ConnectionEnd& from, const vrlis::GatherSample<float>&
 
 // The medium-to-medium sum over the VRLs [first, last).
 Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg, const Vrl* first,
-                    const Vrl* last, Rng& rng, QueryLog* log, Spectrum throughput,
-                    const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log, float bound,
-                    const vrlis::EffortSettings* pair, vrlis::ScoreOctaves* marginal_scores) {
+                    const Vrl* last, Rng& rng, Spectrum throughput, const GatherOptions& options) {
   const vrlis::RaySegment<float> camera = SegmentOf(seg);
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
-  if (log)
+  if (options.query_log)
     for (const Vrl* vrl = first; vrl != last; ++vrl)
-      log->Record({camera, SegmentOf(*vrl), medium}, (throughput * vrl->flux).Rms());
+      options.query_log->Record({camera, SegmentOf(*vrl), medium}, (throughput * vrl->flux).Rms());
   auto share = [&](const vrlis::GatherSample<float>& s) {
-    return GatherShareOf({s.camera_point, {}, false}, s, bound);
+    return GatherShareOf({s.camera_point, {}, false}, s, options.bound);
   };
-  return SumOverChunks(
-      scene, first, last, throughput, effort, stats, weight_log, own, share,
-      [&](const vrlis::EffortSettings& settings, Rng& numbers, const vrlis::VrlSegment<float>* segments,
-          const float* weights, int n, auto& connect, vrlis::EffortTally* tally) {
-        // (The pair's gathers, for the statistics alone, are not scored.)
-        vrlis::GatherMediumVrls(method, settings, camera, medium, segments, weights, n,
-                                [&] { return numbers.Uniform(); }, connect, tally,
-                                &settings == &effort ? marginal_scores : nullptr);
-      },
-      pair);
+  return SumOverChunks(scene, first, last, throughput, options, false, own, share,
+                       [&](const vrlis::EffortCall<float>& call, Rng& numbers, const vrlis::VrlSegment<float>* segments,
+                           int n, auto& visit) {
+                         vrlis::GatherMediumVrls(method, camera, medium, segments, n, [&] { return numbers.Uniform(); },
+                                                 visit, call);
+                       });
 }
 
 }  // namespace
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
-                              const Vrl& vrl, Rng& rng, QueryLog* log, Spectrum throughput) {
-  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, log, throughput, {}, nullptr, nullptr, kUnbounded,
-                    nullptr, nullptr);
+                              const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
+                              const GatherOptions& options) {
+  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, throughput, options);
 }
 
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
-                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log, Spectrum throughput,
-                              const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
-                              float bound, const vrlis::EffortSettings* pair, vrlis::ScoreOctaves* marginal_scores) {
-  return GatherEach(method, scene, seg, vrls.data(), vrls.data() + vrls.size(), rng, log, throughput, effort, stats,
-                    weight_log, bound, pair, marginal_scores);
+                              const Vrl& vrl, Rng& rng) {
+  return GatherEach(method, scene, seg, &vrl, &vrl + 1, rng, Spectrum(1.f), {});
 }
 
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
                                const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
-                               const vrlis::EffortSettings& effort, EffortStats* stats, WeightLog* weight_log,
-                               float bound) {
+                               const GatherOptions& options) {
   const vrlis::Medium<float> medium = MediumOf(scene.medium);
   Rng own = rng.Split();
   const ConnectionEnd from{p, nf, true};
-  auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, bound); };
-  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, effort, stats,
-                                weight_log, own, share,
-                                [&](const vrlis::EffortSettings& settings, Rng& numbers,
-                                    const vrlis::VrlSegment<float>* segments, const float* weights, int n,
-                                    auto& connect, vrlis::EffortTally* tally) {
-                                  vrlis::GatherSurfaceVrls(method, settings, p, nf, medium, segments, weights, n,
-                                                           [&] { return numbers.Uniform(); }, connect, tally);
+  auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, options.bound); };
+  return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, options, true, own,
+                                share,
+                                [&](const vrlis::EffortCall<float>& call, Rng& numbers,
+                                    const vrlis::VrlSegment<float>* segments, int n, auto& visit) {
+                                  vrlis::GatherSurfaceVrls(method, p, nf, medium, segments, n,
+                                                           [&] { return numbers.Uniform(); }, visit, call);
                                 });
 }
 

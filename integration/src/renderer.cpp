@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <utility>
 #include <vector>
@@ -63,80 +64,60 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
                                       : std::vector<Vrl>{};
   const VplSet vpls(std::move(traced));
   std::atomic<std::uint64_t> gathers{0};
-  // Each pixel's counted work (work.hpp), summed in pixel order after the pass: what the price
-  // learns from, with the effort control on.
-  std::vector<double> pixel_work(static_cast<std::size_t>(settings_.width) * settings_.height);
+  // Each pixel's counted work (work.hpp) outside its gather calls, and within them (their
+  // records count it), summed in pixel order after the pass: with the effort control on,
+  // what the price learns from.
+  const std::size_t pixels = static_cast<std::size_t>(settings_.width) * static_cast<std::size_t>(settings_.height);
+  std::vector<double> pixel_work(pixels), gather_work(pixels);
   const vrlis::EffortSettings& effort = settings_.transport.effort;
-  EffortPrice::PixelStats* learned = effort.on ? &price_.BeginPass() : nullptr;
-  vrlis::EffortSettings medium_effort = effort, surface_effort = effort;
-  medium_effort.price = price_.price(GatherKind::Medium);  // from the passes before this one
-  surface_effort.price = price_.price(GatherKind::Surface);
-  medium_effort.within = price_.within(GatherKind::Medium);
-  surface_effort.within = price_.within(GatherKind::Surface);
+  vrlis::EffortSettings base = effort;
   // VrlMarginal's fits for the top marginal_fraction of the gathers by the earlier passes'
   // scores; the first pass fits every gather.
   const bool scored = transport.sampling.vrl == vrlis::VrlSamplers::Of<vrlis::VrlMarginalEntry>() &&
                       transport.marginal_fraction < 1;
-  if (scored && marginal_scores_.total() > 0)
-    medium_effort.marginal_threshold = marginal_scores_.Threshold(transport.marginal_fraction);
+  if (scored && marginal_scores_.total() > 0) base.marginal_threshold = marginal_scores_.Threshold(transport.marginal_fraction);
+  if (effort.on) price_.BeginPass(base);
   tbb::enumerable_thread_specific<vrlis::ScoreOctaves> pass_scores;
   const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
-  // A pixel's radiance and its counted work, from zero (the pixel's own, not its thread's).
-  auto counted = [&](std::size_t i, auto&& radiance) {
-    WorkScope scope(&pixel_work[i]);
-    ThreadWork() += renderer_work::kPixel;
-    return radiance();
-  };
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
-    GatherCount count;
-    if (scored) count.marginal_scores = &pass_scores.local();
-    const std::size_t i = static_cast<std::size_t>(y) * settings_.width + x;
-    if (!effort.on) {
-      const Spectrum L = counted(
-          i, [&] { return VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, medium_effort, surface_effort); });
-      gathers.fetch_add(count.Total(), std::memory_order_relaxed);
-      return L;
+    const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(settings_.width) + static_cast<std::size_t>(x);
+    GatherOptions options;
+    options.query_log = transport.query_log, options.weight_log = transport.weight_log;
+    options.bound = transport.vrl_bound;
+    if (scored) options.marginal_scores = &pass_scores.local();
+    vrlis::PixelRecord counted_only;  // with the control off: the calls' work and samples
+    if (effort.on) {
+      Rng choice(seed, pass, i, StreamPurpose::EffortModel);
+      options.effort = price_.Pixel(x, y, [&] { return choice.Uniform(); });
+      // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
+      // gather their VRLs under the accurate model, for the statistics alone
+      // (docs/maths.md#effort-accurate).
+      const std::uint64_t left = static_cast<std::uint64_t>(y) * settings_.width + static_cast<std::uint64_t>(x - x % 2);
+      options.pair = pairs_models && price_.Pairs(Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
+    } else {
+      options.effort.medium = options.effort.surface = base;
+      options.effort.visit_work = kVisitWork;
+      options.effort.record = &counted_only;
     }
-    vrlis::EffortSettings m = medium_effort, s = surface_effort;
-    m.call_demand = price_.call_demand(GatherKind::Medium, x, y);
-    s.call_demand = price_.call_demand(GatherKind::Surface, x, y);
-    Rng choice(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + x, StreamPurpose::EffortModel);
-    m.model = price_.model(GatherKind::Medium, choice.Uniform());
-    s.model = price_.model(GatherKind::Surface, choice.Uniform());
-    m.decide = price_.decide(GatherKind::Medium, choice.Uniform());
-    s.decide = price_.decide(GatherKind::Surface, choice.Uniform());
-    m.measure_mixture = m.model == vrlis::EffortModel::Chosen && price_.measure_mixture(GatherKind::Medium, choice.Uniform());
-    s.measure_mixture = s.model == vrlis::EffortModel::Chosen && price_.measure_mixture(GatherKind::Surface, choice.Uniform());
-    // The remainder is split where it asks for more paths, never rouletted: its paths cost too
-    // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
-    const double demand = price_.remainder_demand(x, y);  // NaN or below 1: one path
-    const double rate = demand > 1 ? std::min(demand, std::max(1.0, effort.ceiling)) : 1.0;
-    // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
-    // gather their VRLs under the accurate model, for the statistics alone
-    // (docs/maths.md#effort-accurate); the pairing's stream is drawn only where it can pair.
-    const bool paired =
-        pairs_models && price_.pairs() &&
-        price_.pair(Rng(seed, pass, static_cast<std::uint64_t>(y) * settings_.width + (x - x % 2), StreamPurpose::EffortPair)
-                        .Uniform());
-    vrlis::EffortSettings pair;
-    if (paired) {
-      pair = m;
-      pair.decide = pair.measure_mixture = false;
-      pair.model = vrlis::EffortModel::Accurate;
+    Spectrum L;
+    {
+      WorkScope scope(&pixel_work[i]);  // the pixel's own, from zero, whatever its thread did before
+      ThreadWork() += renderer_work::kPixel;
+      L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, options);
     }
-    const Spectrum L = counted(i, [&] {
-      return VrlRadiance(scene_, transport, vrls, vpls, ray, rng, &count, m, s, rate, paired ? &pair : nullptr);
-    });
-    gathers.fetch_add(count.Total(), std::memory_order_relaxed);
-    count.medium_effort.pair_pixel = paired ? 1 : 0;
-    learned->medium[i] = count.medium_effort;
-    learned->surface[i] = count.surface_effort;
-    learned->remainder[i] = count.remainder;
+    const vrlis::PixelRecord& record = *options.effort.record;
+    gather_work[i] = record.medium.work + record.surface.work;
+    gathers.fetch_add(static_cast<std::uint64_t>(record.medium.samples + record.surface.samples),
+                      std::memory_order_relaxed);
     return L;
   });
-  double work = 0;
-  for (double w : pixel_work) work += w;
-  if (effort.on) price_.Add(film, work);
+  double other = 0, work = 0;
+  for (std::size_t i = 0; i < pixels; ++i) other += pixel_work[i], work += pixel_work[i] + gather_work[i];
+  if (effort.on) {
+    std::vector<double> values(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) values[i] = std::sqrt(film.pixels[i].MeanSquare());
+    price_.EndPass(values, other);
+  }
   for (const vrlis::ScoreOctaves& s : pass_scores) marginal_scores_ += s;
   if (stats) *stats = {vrls.size(), gathers.load(), Since(t0), work};
   return film;

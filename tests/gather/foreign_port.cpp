@@ -57,7 +57,6 @@ using tinyvrl::Material;
 using tinyvrl::Rgb;
 using tinyvrl::Vec;
 
-const float* const kNoWeights = nullptr;  // the effort control's, unused with it off
 
 // How the port turns the renderer's medium into vrlis's: by name (the port), or as the
 // positional misfill {g, sigma_a, sigma_s} read as {g, sigma_s, sigma_t}, which no longer
@@ -82,7 +81,7 @@ Rgb PortedGather(const Material& m, const tinyvrl::Ray& ray, double tmin, double
   for (const Beam& b : beams) vrls.push_back({vrlis::FromXyz<float>(b.start), vrlis::FromXyz<float>(b.dir), float(b.length)});
   const vrlis::RaySegment<float> camera{vrlis::FromXyz<float>(ray.o), vrlis::FromXyz<float>(ray.d), float(tmin), float(tmax)};
   Rgb sum{};
-  vrlis::GatherMediumVrls(method, vrlis::EffortSettings{}, camera, grey, vrls.data(), kNoWeights, int(vrls.size()),
+  vrlis::GatherMediumVrls(method, camera, grey, vrls.data(), int(vrls.size()),
                           [&] { return float(rng.next()); },
                           [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
                             if (!(s.bare_weight > 0) ||
@@ -105,7 +104,7 @@ double GreyGather(const Material& m, int c, const tinyvrl::Ray& ray, double tmin
     vrls.push_back({{float(b.start.x), float(b.start.y), float(b.start.z)}, {float(b.dir.x), float(b.dir.y), float(b.dir.z)},
                     float(b.length)});
   double sum = 0;
-  vrlis::GatherMediumVrls(method, vrlis::EffortSettings{}, camera, medium, vrls.data(), kNoWeights, int(vrls.size()),
+  vrlis::GatherMediumVrls(method, camera, medium, vrls.data(), int(vrls.size()),
                           [&] { return float(rng.next()); },
                           [&](int i, const vrlis::GatherSample<float>& s, float) {
                             if (s.contributes() && !tinyvrl::Occluded({s.camera_point.x, s.camera_point.y, s.camera_point.z},

@@ -53,15 +53,14 @@ TEST_CASE("rejected gather queries are counted by reason", "[gather][rejections]
   SECTION("the one-call gather counts a rejected camera segment once and each rejected VRL") {
     vrlis::VrlSegment<float> vrls[3] = {Good().vrl, Good().vrl, Good().vrl};
     vrls[1].length = -1;
-    const float* no_weights = nullptr;  // the effort control's, unused with it off
     int taken = 0;
     auto uniform = [] { return 0.5f; };
     auto connect = [&](int, const vrlis::GatherSample<float>&, float) { ++taken; };
-    vrlis::GatherMediumVrls(method, {}, Good().camera, Good().medium, vrls, no_weights, 3, uniform, connect);
+    vrlis::GatherMediumVrls(method, Good().camera, Good().medium, vrls, 3, uniform, connect);
     CHECK(taken == 2);
     vrlis::RaySegment<float> reversed = Good().camera;
     reversed.tmax = -1;
-    vrlis::GatherMediumVrls(method, {}, reversed, Good().medium, vrls, no_weights, 3, uniform, connect);
+    vrlis::GatherMediumVrls(method, reversed, Good().medium, vrls, 3, uniform, connect);
     CHECK(taken == 2);
     const vrlis::QueryRejections r = vrlis::RejectedQueries().since(start);
     CHECK(Count(r, E::ReversedSegment) == 2);

@@ -1,4 +1,4 @@
-// The effort control in the renderer (vrlis/effort/policy.hpp, effort_price.hpp):
+// The effort control in the renderer (vrlis/effort/policy.hpp, vrlis/effort/price.hpp):
 // - a pass's decisions are a function of the price learned from the passes before it (with
 //   the scene's sampler and with auto): pass 3 rendered by a fresh renderer given that price
 //   equals the original's pass 3 bit for bit,
@@ -104,10 +104,10 @@ TEST_CASE("a pass's effort decisions come from the passes before it", "[render][
   if (automatic) s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
   vrlis::integration::VrlRenderer a(built->scene, s);
   for (std::uint64_t pass = 0; pass < 3; ++pass) a.RenderPass(1, pass, nullptr);
-  const vrlis::integration::EffortPrice learned = a.effort_price();
+  const vrlis::EffortPrice learned = a.effort_price();
   REQUIRE(learned.passes() == 3);
-  REQUIRE(learned.price(vrlis::integration::GatherKind::Medium) > 0);
-  REQUIRE(learned.price(vrlis::integration::GatherKind::Surface) > 0);
+  REQUIRE(learned.price(vrlis::GatherKind::Medium) > 0);
+  REQUIRE(learned.price(vrlis::GatherKind::Surface) > 0);
   const vrlis::integration::Film original = a.RenderPass(1, 3, nullptr);
   for (int threads : {1, 4}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
@@ -137,11 +137,11 @@ TEST_CASE("effort: gathers without variance fall to the floor, a scene of gather
 
 TEST_CASE("effort: calls whose gathers carry no variance are taken at the floor's rate", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
-    return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
+    return MeanOverPixels(scene, [](const vrlis::EffortPrice& price,
                                     const vrlis::integration::RenderSettings& s, int x, int y) {
       vrlis::EffortSettings e = s.transport.effort;
-      e.price = price.price(vrlis::integration::GatherKind::Medium);
-      e.call_demand = price.call_demand(vrlis::integration::GatherKind::Medium, x, y);
+      e.price = price.price(vrlis::GatherKind::Medium);
+      e.call_demand = price.call_demand(vrlis::GatherKind::Medium, x, y);
       return vrlis::EffortCallRate(e);
     });
   };
@@ -192,12 +192,12 @@ TEST_CASE("effort keeps the image's mean", "[render][effort]") {
 
 TEST_CASE("effort: a split remainder keeps its mean and learns its second moment", "[render][effort]") {
   // A "path" worth u, uniform in [0, 1): mean 1/2, second moment 1/3. At rates below, at and
-  // above one the split sum keeps the mean and RemainderStats' m2 per launch estimates 1/3;
+  // above one the split sum keeps the mean and RemainderRecord's m2 per launch estimates 1/3;
   // the sabotage (the split sum without its 1 / rate) must be rejected.
   const double rate = GENERATE(0.4, 1.0, 2.6);
   INFO("rate " << rate);
   vrlis::integration::Rng rng(7, 0, 0, vrlis::integration::StreamPurpose::Camera);
-  vrlis::integration::RemainderStats stats;
+  vrlis::RemainderRecord stats;
   vrlis::RunningMoments kept, sabotaged;
   for (int k = 0; k < 40000; ++k) {
     const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, [&] {
@@ -217,7 +217,7 @@ TEST_CASE("effort: a split remainder keeps its mean and learns its second moment
 
 TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
-    return MeanOverPixels(scene, [](const vrlis::integration::EffortPrice& price,
+    return MeanOverPixels(scene, [](const vrlis::EffortPrice& price,
                                     const vrlis::integration::RenderSettings&, int x, int y) {
       return price.remainder_demand(x, y);
     });
@@ -232,7 +232,7 @@ TEST_CASE("effort: auto weighs the models by the variance each adds or removes",
   // What the first price weighs the image's model by, from the first pass: its variances are
   // the image's and the samples', which the seed fixes, and are checked here; its work is
   // counted, and the choice it makes with them is the synthetic test's (below).
-  using Weighing = vrlis::integration::EffortPrice::ModelWeighing;
+  using Weighing = vrlis::EffortPrice::ModelWeighing;
   auto weigh = [](const char* scene, float g, int size, bool fixed_lattice) {
     vrlis::scenes::MediumOverrides medium;
     medium.g = g;
@@ -244,7 +244,7 @@ TEST_CASE("effort: auto weighs the models by the variance each adds or removes",
     s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
     vrlis::integration::VrlRenderer r(built->scene, s);
     r.RenderPass(1, 0, nullptr);
-    return r.effort_price().model_weighing(vrlis::integration::GatherKind::Medium);
+    return r.effort_price().model_weighing(vrlis::GatherKind::Medium);
   };
   // The image's measured variance: the rule's and the pilots' shares of theirs.
   auto measured = [](const Weighing& w) {
@@ -279,9 +279,9 @@ TEST_CASE("effort: auto weighs the models by the variance each adds or removes",
   CHECK(plain.accurate.dv > -plain.v_rule);  // a variance cannot fall below 0
 }
 
-// A pair (GatherMediumToMedium's `pair`) is for the statistics alone: the call returns what it
-// returns without one and leaves the same numbers to the rest of the path, and its pixel delta
-// is what the accurate model, taken on the same numbers, would have added instead.
+// A pair (GatherOptions::pair) is for the statistics alone: the call returns what it returns
+// without one and leaves the same numbers to the rest of the path, and its record's sum less
+// the pixel's is what the accurate model, taken on the same numbers, would have added instead.
 TEST_CASE("effort: a pair changes no gather and measures the accurate model on the same numbers",
           "[render][effort]") {
   using namespace vrlis::integration;
@@ -291,10 +291,12 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
   const std::vector<Vrl> vrls = TraceLightPaths(scene, built->transport, 32, 1, 0);
   REQUIRE(vrls.size() > 8);
   const vrlis::GatherSamplers method = *vrlis::ParseGatherSamplers("auto");
-  vrlis::EffortSettings rule;
-  rule.on = true, rule.decide = false;
-  vrlis::EffortSettings accurate = rule;
-  accurate.model = vrlis::EffortModel::Accurate;
+  GatherOptions rule;
+  rule.effort.medium.on = true, rule.effort.medium.decide = false;
+  rule.effort.pair = rule.effort.medium;
+  rule.effort.pair.model = vrlis::EffortModel::Accurate;
+  GatherOptions accurate;
+  accurate.effort.medium = rule.effort.pair;
   const Spectrum throughput(0.5f);
   int segments = 0;
   for (int pixel = 0; pixel < 16; ++pixel) {
@@ -305,19 +307,23 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
     if (seg.iv.Empty()) continue;
     ++segments;
     Rng a(1, 0, static_cast<std::uint64_t>(pixel), StreamPurpose::Camera), b = a, c = a;
-    EffortStats plain, paired;
-    const Spectrum alone = GatherMediumToMedium(method, scene, seg, vrls, a, nullptr, throughput, rule, &plain);
-    const Spectrum with_pair =
-        GatherMediumToMedium(method, scene, seg, vrls, b, nullptr, throughput, rule, &paired, nullptr, kUnbounded, &accurate);
-    const Spectrum instead = GatherMediumToMedium(method, scene, seg, vrls, c, nullptr, throughput, accurate);
+    vrlis::PixelRecord plain, paired;
+    GatherOptions alone_options = rule, pair_options = rule;
+    alone_options.effort.record = &plain;
+    pair_options.effort.record = &paired, pair_options.pair = true;
+    const Spectrum alone = GatherMediumToMedium(method, scene, seg, vrls, a, throughput, alone_options);
+    const Spectrum with_pair = GatherMediumToMedium(method, scene, seg, vrls, b, throughput, pair_options);
+    const Spectrum instead = GatherMediumToMedium(method, scene, seg, vrls, c, throughput, accurate);
     CHECK(std::memcmp(&alone, &with_pair, sizeof(Spectrum)) == 0);
     CHECK(a.Uniform() == b.Uniform());
-    CHECK(paired.accurate_samples > 0);
-    CHECK(paired.pair_work > 0);
-    const Spectrum measured = throughput * with_pair + paired.pair_delta, expected = throughput * instead;
-    INFO("pixel " << pixel << ": accurate " << expected.r << ", rule + delta " << measured.r);
-    CHECK(measured.r == Approx(expected.r).epsilon(1e-4).margin(1e-9));
-    CHECK(measured.b == Approx(expected.b).epsilon(1e-4).margin(1e-9));
+    CHECK(paired.pair.model_samples[static_cast<int>(vrlis::EffortModel::Accurate)] > 0);
+    CHECK(paired.pair.work > 0);
+    CHECK(plain.pair.calls == 0);
+    // The scene's light is grey: the RMS of a sum is the sum of the RMS.
+    const double measured = (throughput * with_pair).Rms() + (paired.pair.sum - paired.medium.sum);
+    const double expected = (throughput * instead).Rms();
+    INFO("pixel " << pixel << ": accurate " << expected << ", rule + delta " << measured);
+    CHECK(measured == Approx(expected).epsilon(1e-4).margin(1e-9));
   }
   CHECK(segments > 8);
 }
@@ -330,28 +336,23 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
 // (excess / V < 2 / 5) only below 0.0053.
 TEST_CASE("effort: the price takes the model whose variance x time is least", "[render][effort]") {
   using vrlis::EffortModel;
-  using vrlis::integration::EffortStats;
+  constexpr int kRule = static_cast<int>(EffortModel::Chosen), kMixture = static_cast<int>(EffortModel::Mixture);
   auto model = [](double excess) {
     constexpr int kSide = 8;
-    vrlis::integration::EffortPrice price(kSide, kSide);
+    vrlis::EffortPrice price(kSide, kSide);
     for (int pass = 0; pass < 5; ++pass) {
-      auto& pixels = price.BeginPass();
-      for (std::size_t i = 0; i < pixels.medium.size(); ++i) {
-        EffortStats p;
-        p.calls = 1, p.gathers = 10, p.work = 5e3, p.predicted = p.measured = 1;  // priced from the second pass
-        p.rule_samples = 10;
-        if (i % 2) p.rule_work = 10 * 400.0;
+      price.BeginPass(vrlis::EffortSettings{true});
+      for (int i = 0; i < kSide * kSide; ++i) {
+        vrlis::EffortRecord& p = price.Pixel(i % kSide, i / kSide, [] { return 0.5; }).record->medium;
+        p.calls = 1, p.samples = 10, p.work = 5e3, p.predicted = p.measured = 1;  // priced from the second pass
+        p.model_samples[kRule] = 10;
+        if (i % 2) p.model_work[kRule] = 10 * 400.0;
         else p.mixture_measured = 10, p.mixture_excess = excess;
-        if (pass == 0 && i == 1) p.gathers += 10, p.mixture_samples = 10, p.mixture_work = 10 * 200.0;
-        pixels.medium[i] = p;
-        pixels.surface[i] = {};
-        pixels.remainder[i] = {};
+        if (pass == 0 && i == 1) p.samples += 10, p.model_samples[kMixture] = 10, p.model_work[kMixture] = 10 * 200.0;
       }
-      vrlis::integration::Film film(kSide, kSide);
-      for (auto& v : film.pixels) v = vrlis::integration::Spectrum(pass % 2 ? 0.9f : 1.1f);
-      price.Add(film, kSide * kSide * 5e3);
+      price.EndPass(std::vector<double>(kSide * kSide, pass % 2 ? 0.9 : 1.1));
     }
-    return price.model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+    return price.model(vrlis::GatherKind::Medium);
   };
   CHECK(model(0.002) == EffortModel::Mixture);
   CHECK(model(0.007) == EffortModel::Mixture);  // the rule to first order
@@ -367,31 +368,27 @@ TEST_CASE("effort: the price takes the model whose variance x time is least", "[
 TEST_CASE("effort: the accurate model is taken where its pairs' image is worth the time, once",
           "[render][effort]") {
   using vrlis::EffortModel;
-  using vrlis::integration::EffortStats;
-  using vrlis::integration::Spectrum;
+  constexpr int kRule = static_cast<int>(EffortModel::Chosen), kAccurate = static_cast<int>(EffortModel::Accurate);
   auto model = [](double spread, double work, int passes, bool paired) {
     constexpr int kSide = 8;
-    vrlis::integration::EffortPrice price(kSide, kSide);
+    vrlis::EffortPrice price(kSide, kSide);
     for (int pass = 0; pass < passes; ++pass) {
-      auto& pixels = price.BeginPass();
-      vrlis::integration::Film film(kSide, kSide);
-      for (std::size_t i = 0; i < pixels.medium.size(); ++i) {
-        const float value = i % 2 ? 0.9f : 1.1f;
-        film.pixels[i] = Spectrum(value);
-        EffortStats p;
-        p.calls = 1, p.gathers = 10, p.work = 5e3, p.predicted = p.measured = 1;
-        p.rule_samples = 10, p.rule_work = 10 * 400.0;
+      price.BeginPass(vrlis::EffortSettings{true});
+      std::vector<double> values(kSide * kSide);
+      for (int i = 0; i < kSide * kSide; ++i) {
+        values[std::size_t(i)] = i % 2 ? 0.9 : 1.1;
+        vrlis::PixelRecord& r = *price.Pixel(i % kSide, i / kSide, [] { return 0.5; }).record;
+        vrlis::EffortRecord& p = r.medium;
+        p.calls = 1, p.samples = 10, p.work = 5e3, p.predicted = p.measured = 1;
+        p.model_samples[kRule] = 10, p.model_work[kRule] = 10 * 400.0;
         if (pass == 0 && paired) {
-          p.accurate_samples = 10, p.accurate_work = 10 * work, p.pair_work = 1e3, p.pair_pixel = 1;
-          p.pair_delta = Spectrum(static_cast<float>((value - 1) * (spread - 1)));
+          r.pair.calls = 1, r.pair.model_samples[kAccurate] = 10, r.pair.model_work[kAccurate] = 10 * work;
+          r.pair.sum = (values[std::size_t(i)] - 1) * (spread - 1);
         }
-        pixels.medium[i] = p;
-        pixels.surface[i] = {};
-        pixels.remainder[i] = {};
       }
-      price.Add(film, kSide * kSide * 5e3);
+      price.EndPass(values);
     }
-    return price.model(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+    return price.model(vrlis::GatherKind::Medium);
   };
   CHECK(model(0.3, 2e3, 1, true) == EffortModel::Accurate);   // V / 11 at 4.2 times T
   CHECK(model(0.3, 6e3, 1, true) == EffortModel::Chosen);     // V / 11 at 12 times T
@@ -410,7 +407,7 @@ TEST_CASE("effort: gathers are decided one by one only where the decisions pay",
     s.transport.sampling = *vrlis::ParseGatherSamplers(sampler);
     vrlis::integration::VrlRenderer r(built->scene, s);
     for (std::uint64_t pass = 0; pass < 6; ++pass) r.RenderPass(1, pass, nullptr);
-    return r.effort_price().decide(vrlis::integration::GatherKind::Medium, 0.5);  // 0.5: not exploring
+    return r.effort_price().decisions_pay(vrlis::GatherKind::Medium);
   };
   CHECK(decide("room", 0.5f, "equiangular"));
   CHECK_FALSE(decide("bidirectional", 0.f, "equiangular"));

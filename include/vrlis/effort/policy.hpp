@@ -5,7 +5,6 @@
 // Russian roulette below one, splitting above, unbiased for any q > 0 (and q is never 0).
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 namespace vrlis {
@@ -67,22 +66,6 @@ struct EffortSettings {
   // none. With the control on or off; not for `auto`'s accurate model, which the control
   // gives only to the gathers that ask for it.
   double marginal_threshold = 0;
-};
-
-// What a call of gathers did, for the renderer's price: the predicted second moments
-// (w x bound)^2, summed over the samples taken with their effort weights 1 / q (an unbiased
-// estimate of their sum over the gathers considered, as the renderer's own sum over the
-// samples is of the true second moments). Its own sum of the samples' (effort weight x
-// contribution^2), visibility included, estimates the true one: their ratio, learned from
-// earlier passes, scales the price (a bound is not a second moment). And its counted work
-// (work.hpp; the visitor's, the renderer's occlusion rays, is the renderer's to count): the
-// whole call's, its sampling's (the rest is its decisions': bounds and the loop over VRLs),
-// and per EffortModel the samples taken and their work (docs/maths.md#effort-work).
-struct EffortTally {
-  double predicted = 0;
-  double work = 0, sample_work = 0;
-  std::uint64_t model_samples[kEffortModels] = {};
-  double model_work[kEffortModels] = {};
 };
 
 // Whether the control has a price to decide by: on, deciding, and a positive finite price learned.

@@ -30,5 +30,8 @@ inline constexpr double kSurfaceTightBound = 7.00;
 inline constexpr double kVrl = 11.29;
 // A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
 inline constexpr double kDecision = 34.19;
+// A visit of the example renderer, the default of a renderer that counts none of its own: an
+// occlusion ray and the connection around it (Work/ray/occluded/ and Work/renderer/call/).
+inline constexpr double kVisit = 66.8;
 
 }  // namespace vrlis::work_costs

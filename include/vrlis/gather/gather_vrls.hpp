@@ -2,30 +2,28 @@
 // Every VRL against one camera segment, or one surface point, in one call: the query's
 // shared parts validated and the samplers chosen once, the effort decision per VRL
 // (effort/policy.hpp), the gathers run in batches by SampleMediumGathers / SampleSurfaceGathers,
-// and each sample handed to the renderer, which traces its occlusion ray:
+// and each sample handed to the renderer's visitor, which traces its occlusion ray:
 //
-//   vrlis::GatherMediumVrls(method, effort, camera, medium, vrls, weights, n, uniform,
+//   vrlis::GatherMediumVrls(samplers, camera, medium, vrls, n, uniform,
 //       [&](int i, const vrlis::GatherSample<float>& s, float w) {
 //         if (s.contributes() && visible(s.camera_point, s.light_point)) sum += w * s.weight * flux[i];
 //       });
 //
-// weights[i] >= 0 scales VRL i's predicted contribution (its power times the camera path's
-// throughput, in the units of the price): for the effort control's decisions, and with
-// VrlMarginal as step one for the choice of the gathers it fits
-// (EffortSettings::marginal_threshold, with the control on or off); null: all equal. uniform()
-// returns a number in [0, 1). With the control off, or the call's gathers undecided
-// (EffortSettings::decide), every VRL draws exactly its gather's numbers (two, or one at a
-// surface), in order, valid or not, so images do not depend on batching or validity; decided,
-// the call may first draw one for whether it is taken (EffortCallRate), and each VRL one for
-// its number of samples.
+// With an EffortCall (effort/call.hpp; EffortPrice::Pixel hands them out) the call is
+// controlled and, with a record, learns: the visitor then returns the contribution it added.
+// uniform() returns a number in [0, 1). With the control off, or the call's gathers
+// undecided (EffortSettings::decide), every VRL draws exactly its gather's numbers (two, or
+// one at a surface), in order, valid or not, so images do not depend on batching or
+// validity; decided, the call may first draw one for whether it is taken (EffortCallRate),
+// and each VRL one for its number of samples (docs/porting.md#the-fast-path).
 #include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
-#include "../effort/marginal_fits.hpp"
-#include "../effort/policy.hpp"
+#include "../effort/call.hpp"
 #include "../effort/work.hpp"
 #include "medium_gather.hpp"
 #include "surface_gather.hpp"
@@ -52,10 +50,23 @@ struct GatherBatch {
   int count = 0;
 };
 
-// The work of a call's decisions per VRL (work.hpp): its quick and its tight bound.
+// The work of a call's decisions per VRL (work.hpp): its quick and its tight bound, and what
+// the call spent on every VRL before its loop (VrlMarginal's scores).
 struct BoundWork {
-  double quick, tight;
+  double quick, tight, before = 0;
 };
+
+// A decided call's samples of each VRL (a gather split into several samples): how many, and
+// the sums of their unweighted contributions and squares, for the record's within variance.
+struct SplitSums {
+  int samples;
+  double sum, sum_sq;
+};
+
+// Whether visit(i, sample, weight) returns the contribution it added (what a record needs).
+template <typename Visit, typename Real>
+inline constexpr bool kVisitReturns =
+    !std::is_void_v<std::invoke_result_t<Visit&, int, const GatherSample<Real>&, Real>>;
 
 // The loop shared by both gathers: bounds(first, n, quick, tight) writes, for VRLs
 // [first, first + n) (n <= kBoundBatch), a cheap bound of each one's unweighted mean into
@@ -66,16 +77,53 @@ struct BoundWork {
 // per model, and returns its counted work. A batch is run when full; with the gathers
 // undecided (the control off, or EffortSettings::decide false) also after every kSize VRLs,
 // so that the batches are those of one gather per VRL (decided, the few samples roulette
-// leaves would each pay a whole batch). The tally, if set, counts the work of the loop, the
-// bounds and the batches.
+// leaves would each pay a whole batch). The call's record, if set, adds what the visitor's
+// contributions and the counted work of the loop, the bounds, the batches and the visits tell
+// (record.hpp).
 template <int kUniforms, bool kPolicy, typename Real, typename Uniform, typename Bounds, typename Gather,
-          typename Connect>
-void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, const Real* weights,
-                   int count, bool valid, Uniform& uniform, BoundWork bound_work, Bounds&& bounds, Gather&& gather,
-                   Connect& connect, EffortTally* tally) {
+          typename Visit>
+void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, int count, bool valid,
+                   Uniform& uniform, BoundWork bound_work, Bounds&& bounds, Gather&& gather, Visit& visit) {
+  constexpr bool kReturns = kVisitReturns<Visit, Real>;
+  const EffortSettings& effort = call.settings;
+  EffortRecord* record = kReturns ? call.record : nullptr;
+  if (!kReturns && call.record)
+    throw std::invalid_argument("vrlis: a gather call with a record needs a visitor that returns its contribution");
+  const bool decide = effort.on && effort.decide;
   const double rate = EffortCallRate(effort);
-  if (tally) tally->work += work_costs::kVrl;  // a call not taken still draws its number
-  if (rate < 1 && !(double(uniform()) < rate)) return;  // each sample of a taken call weighs 1 / rate more
+  double call_sum = 0, loop_work = work_costs::kVrl;  // a call not taken still draws its number
+  constexpr int kStackVrls = 256;
+  SplitSums stack_split[kReturns ? kStackVrls : 1];
+  std::vector<SplitSums> heap_split;
+  SplitSums* split = nullptr;  // per VRL, where a record learns how splitting pays
+  if (record && decide) {
+    if (count > kStackVrls) heap_split.resize(std::size_t(count));
+    split = count > kStackVrls ? heap_split.data() : stack_split;
+    std::fill(split, split + count, SplitSums{0, 0, 0});
+  }
+  auto finish = [&] {
+    if (!record) return;
+    record->calls += 1, record->decided += decide ? 1 : 0, record->vrls += count;
+    record->call_rate += rate, record->call_m2 += rate * call_sum * call_sum;
+    record->work += loop_work;
+    for (int i = 0; split && i < count; ++i)
+      if (split[i].samples > 1) {
+        const double k = split[i].samples, mean = split[i].sum / k;
+        record->split_within += std::max(0.0, (split[i].sum_sq - k * mean * mean) / (k - 1));
+        record->split_second += split[i].sum_sq / k;
+      }
+  };
+  if (rate < 1 && !(double(uniform()) < rate)) return finish();  // each sample of a taken call weighs 1 / rate more
+  // What the record learns from one sample, contribution y to the pixel, effort weight w.
+  auto learn = [&](int i, const GatherSample<Real>& s, double w, double y) {
+    record->samples += 1, record->sum += y, call_sum += y;
+    if (!decide && !(s.over_equiangular > 0 || s.over_mixture > 0)) return;  // nothing else to learn from it
+    const double bare = y / w, m2 = w * bare * bare;
+    if (decide) record->measured += m2, (w > 1 ? record->roulette_excess : record->split_excess) += m2 * (w - 1);
+    if (s.over_equiangular > 0) record->cheapest_excess += y * y * (double(s.over_equiangular) - 1);
+    if (s.over_mixture > 0) record->mixture_excess += y * y * (double(s.over_mixture) - 1);
+    if (split) split[i].samples += 1, split[i].sum += bare, split[i].sum_sq += bare * bare;
+  };
   using Batch = GatherBatch<Real, kUniforms>;
   // By EffortModel, each built when first used (they are zeroed, and a call uses one or two).
   std::optional<Batch> batches[kPolicy ? kEffortModels : 1];
@@ -88,21 +136,29 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   auto run = [&](EffortModel model) {
     Batch& batch = *batches[static_cast<int>(model)];
     const double work = gather(model, batch, samples);
-    for (int k = 0; k < batch.count; ++k) connect(batch.source[k], samples[k], batch.effort_weight[k]);
-    if (tally) {
-      tally->model_samples[static_cast<int>(model)] += static_cast<std::uint64_t>(batch.count);
-      tally->model_work[static_cast<int>(model)] += work;
-      tally->sample_work += work;
-      tally->work += work;
+    for (int k = 0; k < batch.count; ++k) {
+      if constexpr (kReturns) {
+        const double y = double(visit(batch.source[k], samples[k], batch.effort_weight[k]));
+        if (record) learn(batch.source[k], samples[k], double(batch.effort_weight[k]), y);
+      } else {
+        visit(batch.source[k], samples[k], batch.effort_weight[k]);
+      }
+    }
+    if (record) {
+      const int m = static_cast<int>(model);
+      record->model_samples[m] += batch.count;
+      if (!(model == EffortModel::Chosen && effort.measure_mixture)) record->model_work[m] += work;
+      if (model == EffortModel::Chosen && effort.measure_mixture) record->mixture_measured += batch.count;
+      const double sampled = work + batch.count * call.visit_work;
+      record->sample_work += sampled, record->work += sampled;
     }
     batch.count = 0;
   };
   Real quick[kBoundBatch], tight[kBoundBatch];
   bool tight_taken = false;  // for the block of VRL i
-  const bool decide = effort.on && effort.decide;
   EffortModel model = EffortModel::Chosen;  // the call's, unless decided per gather
   if constexpr (kPolicy) model = ChooseEffortModel(effort, 1);
-  double loop_work = count * work_costs::kVrl;
+  loop_work += count * (work_costs::kVrl + bound_work.before);
   for (int i = 0; i < count; ++i) {
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
     const int lane = i % kBoundBatch, first = i - lane, block = std::min(kBoundBatch, count - first);
@@ -113,7 +169,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
     int n = 1;
     Real weight = 1;
     if (decide) {
-      const double weight_i = weights ? double(weights[i]) : 1;  // null: all equal
+      const double weight_i = call.weights ? double(call.weights[i]) : 1;  // null: all equal
       double m2 = -1;  // the predicted second moment, once needed
       auto predicted = [&] {
         if (!tight_taken) {
@@ -129,7 +185,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
       if constexpr (kPolicy) model = ChooseEffortModel(effort, demand);
       n = EffortSamples(q / rate, double(uniform()));
       weight = n > 0 ? Real(1 / q) : Real(0);
-      if (tally && n > 0) tally->predicted += n * predicted() / q;
+      if (record && n > 0) record->predicted += n * predicted() / q;
     }
     Batch& batch = batch_of(model);
     for (int j = 0; j < n; ++j) {
@@ -146,7 +202,7 @@ void GatherEachVrl(const EffortSettings& effort, const VrlSegment<Real>* vrls, c
   }
   for (int m = 0; m < (kPolicy ? kEffortModels : 1); ++m)
     if (batches[m] && batches[m]->count > 0) run(EffortModel(m));
-  if (tally) tally->work += loop_work;
+  finish();
 }
 
 }  // namespace detail
@@ -168,25 +224,23 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 }
 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
-// connect(i, sample, effort_weight) for every sample taken (an invalid query takes none);
-// tally, if set, adds the predictions (decided gathers only) and the call's counted work;
-// marginal_scores, if set and VrlMarginal is step one, the gathers' MarginalFitScores.
-template <typename Real, typename Uniform, typename Connect>
-void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const RaySegment<Real>& camera,
-                      const Medium<Real>& medium, const VrlSegment<Real>* vrls,
-                      const typename detail::NonDeduced<Real>::type* weights, int count,
-                      Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr,
-                      ScoreOctaves* marginal_scores = nullptr) {
+// visit(i, sample, effort_weight) for every sample taken (an invalid query takes none),
+// controlled by `effort` (effort/call.hpp; by default the control is off and nothing learns).
+template <typename Real, typename Uniform, typename Visit>
+void GatherMediumVrls(GatherSamplers samplers, const RaySegment<Real>& camera, const Medium<Real>& medium,
+                      const VrlSegment<Real>* vrls, int count, Uniform&& uniform, Visit&& visit,
+                      const EffortCall<typename detail::NonDeduced<Real>::type>& effort = {}) {
   const bool valid = Validate(camera) == QueryError::None && Validate(medium) == QueryError::None;
-  WithGatherSamplers<Real>(method, [&](auto step_one, auto step_two) {
+  const EffortSettings& settings = effort.settings;
+  WithGatherSamplers<Real>(samplers, [&](auto step_one, auto step_two) {
     using VrlSampler = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
     constexpr bool policy = std::is_same_v<StepTwo, AutoEntry::Sampler<Real>>;
     // VrlMarginal's fits for the gathers whose score reaches the threshold (not auto's
     // accurate model, which is already given by demand).
     constexpr bool marginal = std::is_same_v<VrlSampler, VrlMarginalEntry::Sampler<Real>>;
-    const bool chosen = marginal && valid && effort.marginal_threshold > 0;
-    const bool scored = marginal && valid && (chosen || marginal_scores);
+    const bool chosen = marginal && valid && settings.marginal_threshold > 0;
+    const bool scored = marginal && valid && (chosen || effort.scores);
     constexpr int kStackScores = 256;
     double stack_score[marginal ? kStackScores : 1];
     Real stack_bound[marginal ? kStackScores : 1];
@@ -199,14 +253,14 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
         heap_score.resize(std::size_t(count)), score = heap_score.data();
         heap_bound.resize(std::size_t(count)), bound = heap_bound.data();
       }
-      detail::WithWidestLanes([&] { MarginalFitScores(camera, medium, vrls, weights, count, bound, score); });
-      if (tally) tally->work += count * work_costs::kMediumTightBound;
-      for (int i = 0; marginal_scores && i < count; ++i) marginal_scores->Add(score[i]);
+      detail::WithWidestLanes([&] { MarginalFitScores(camera, medium, vrls, effort.weights, count, bound, score); });
+      for (int i = 0; effort.scores && i < count; ++i) effort.scores->Add(score[i]);
     }
     detail::GatherEachVrl<2, policy>(
-        effort, vrls, weights, count, valid, uniform,
-        // The tight bounds taken with the scores are counted there.
-        detail::BoundWork{work_costs::kMediumQuickBound, scored ? 0 : work_costs::kMediumTightBound},
+        effort, vrls, count, valid, uniform,
+        // The tight bounds taken with the scores, counted before the loop.
+        scored ? detail::BoundWork{work_costs::kMediumQuickBound, 0, work_costs::kMediumTightBound}
+               : detail::BoundWork{work_costs::kMediumQuickBound, work_costs::kMediumTightBound},
         [&](int first, int n, Real* quick, Real* tight) {
           if (scored && tight) {  // taken with the scores
             std::copy(bound + first, bound + first + n, tight);
@@ -215,17 +269,17 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
           if (quick || tight) MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
-          const SegmentChoice taken = SegmentSamplerFor(method.segment, model);
+          const SegmentChoice taken = SegmentSamplerFor(samplers.segment, model);
           // Its counted work: each sample's, VrlMarginal's fit where it takes one.
           auto with = [&](auto one, auto two, const bool* fitted = nullptr) {
             using One = typename decltype(one)::type;
             SampleMediumGathers<One, typename decltype(two)::type>(ValidQuery{}, camera, medium, b.segments, b.count,
-                                                                  b.u[0], b.u[1], samples, effort.measure_mixture,
+                                                                  b.u[0], b.u[1], samples, settings.measure_mixture,
                                                                   true, fitted);
             int fits = 0;
             if constexpr (std::is_same_v<One, VrlMarginalEntry::Sampler<Real>>)
               for (int k = 0; k < b.count; ++k) fits += !fitted || fitted[k];
-            return b.count * (MediumSampleWork(taken) + (effort.measure_mixture ? work_costs::kMixtureDensity : 0)) +
+            return b.count * (MediumSampleWork(taken) + (settings.measure_mixture ? work_costs::kMixtureDensity : 0)) +
                    fits * MarginalFitWork();
           };
           // A model in place of auto's rule: its segment sampler, after VrlMarginal for the
@@ -239,36 +293,36 @@ void GatherMediumVrls(GatherSamplers method, const EffortSettings& effort, const
               });
           }
           bool fitted[std::decay_t<decltype(b)>::kSize];
-          for (int k = 0; chosen && k < b.count; ++k) fitted[k] = score[b.source[k]] >= effort.marginal_threshold;
+          for (int k = 0; chosen && k < b.count; ++k) fitted[k] = score[b.source[k]] >= settings.marginal_threshold;
           return with(Type<VrlSampler>{}, Type<StepTwo>{}, chosen ? fitted : nullptr);
         },
-        connect, tally);
+        visit);
   });
 }
 
 // The medium-to-surface gathers of vrls[0, count) at the point (normal facing the viewer),
-// the VRL points by `method`'s camera sampler, as GatherMediumVrls.
-template <typename Real, typename Uniform, typename Connect>
-void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<Real> point, Vec3<Real> normal,
-                       const Medium<Real>& medium, const VrlSegment<Real>* vrls,
-                       const typename detail::NonDeduced<Real>::type* weights, int count,
-                       Uniform&& uniform, Connect&& connect, EffortTally* tally = nullptr) {
+// the VRL points by `sampler`, as GatherMediumVrls.
+template <typename Real, typename Uniform, typename Visit>
+void GatherSurfaceVrls(SegmentChoice sampler, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
+                       const VrlSegment<Real>* vrls, int count, Uniform&& uniform, Visit&& visit,
+                       const EffortCall<typename detail::NonDeduced<Real>::type>& effort = {}) {
+  const bool measure_mixture = effort.settings.measure_mixture;
   const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
-  SegmentSamplers::WithEntry(method, [&](auto entry) {
-    using Sampler = typename decltype(entry)::template Sampler<Real>;
-    constexpr bool policy = std::is_same_v<Sampler, AutoEntry::Sampler<Real>>;
+  SegmentSamplers::WithEntry(sampler, [&](auto entry) {
+    using Chosen = typename decltype(entry)::template Sampler<Real>;
+    constexpr bool policy = std::is_same_v<Chosen, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<1, policy>(
-        effort, vrls, weights, count, valid, uniform,
+        effort, vrls, count, valid, uniform,
         detail::BoundWork{work_costs::kSurfaceQuickBound, work_costs::kSurfaceTightBound},
         [&](int first, int n, Real* quick, Real* tight) {
           SurfaceGatherBounds(point, normal, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
-          const SegmentChoice taken = SegmentSamplerFor(method, model);
-          auto with = [&](auto sampler) {
-            SampleSurfaceGathers<typename decltype(sampler)::type>(ValidQuery{}, point, normal, medium, b.segments,
-                                                                   b.count, b.u[0], samples, effort.measure_mixture);
-            return b.count * (SurfaceSampleWork(taken) + (effort.measure_mixture ? work_costs::kMixtureDensity : 0));
+          const SegmentChoice taken = SegmentSamplerFor(sampler, model);
+          auto with = [&](auto type) {
+            SampleSurfaceGathers<typename decltype(type)::type>(ValidQuery{}, point, normal, medium, b.segments,
+                                                                b.count, b.u[0], samples, measure_mixture);
+            return b.count * (SurfaceSampleWork(taken) + (measure_mixture ? work_costs::kMixtureDensity : 0));
           };
           if constexpr (policy) {
             if (model != EffortModel::Chosen)
@@ -276,9 +330,9 @@ void GatherSurfaceVrls(SegmentChoice method, const EffortSettings& effort, Vec3<
                 return with(Type<typename decltype(entry)::template Sampler<Real>>{});
               });
           }
-          return with(Type<Sampler>{});
+          return with(Type<Chosen>{});
         },
-        connect, tally);
+        visit);
   });
 }
 

@@ -1,14 +1,12 @@
 #pragma once
 // The VRL estimators of docs/maths.md#estimators, one sample each, as a renderer uses the
 // library: build the query, let vrlis sample and weight it, trace one occlusion ray.
-#include <vrlis/effort/marginal_fits.hpp>
-#include <vrlis/effort/policy.hpp>
+#include <vrlis/effort/price.hpp>
 #include <vrlis/gather/gather_sample.hpp>
 #include <vrlis/method.hpp>
 
 #include <vector>
 
-#include "effort_price.hpp"
 #include "query_log.hpp"
 #include "scene.hpp"
 #include "share.hpp"
@@ -32,28 +30,33 @@ vrlis::Medium<float> MediumOf(const HomogeneousMedium& m);
 // connection): 0 for a sample that does not contribute.
 float Connect(const Scene& scene, const vrlis::GatherSample<float>& s);
 
+// What a VRL gather call of the camera pass takes besides its query: the pixel's effort
+// (vrlis/effort/price.hpp; its settings with the control off too, e.g. VrlMarginal's
+// threshold) and its record (none: nothing learned or counted), whether it also gathers its
+// medium VRLs under the accurate model for the statistics (PixelEffort::Pair), where
+// VrlMarginal's scores, the query log and the weight log go, and the geometry term up to
+// which each sample's connection is taken (share.hpp; the remainder carries the rest).
+struct GatherOptions {
+  vrlis::PixelEffort effort;
+  bool pair = false;
+  vrlis::ScoreOctaves* marginal_scores = nullptr;
+  QueryLog* query_log = nullptr;    // medium-to-medium: each query offered with weight throughput x flux
+  WeightLog* weight_log = nullptr;  // every sample taken (weight_log.hpp)
+  float bound = kUnbounded;
+};
+
 // Radiance along the camera ray from light scattered at a VRL point and again on the segment
 // (the single-VRL form of the sum below, which the comparison uses per VRL).
-// With a log, the query is offered to it with the weight throughput x flux (query_log.hpp).
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
-                              const Vrl& vrl, Rng& rng, QueryLog* log = nullptr, Spectrum throughput = Spectrum(1.f));
+                              const Vrl& vrl, Rng& rng);
 
 // The sum of GatherMediumToMedium over every VRL, with the same random numbers in the same
-// order: the camera pass's inner loop, one call of the library's GatherMediumVrls. With the
-// effort control (vrlis/effort/policy.hpp) each VRL is gathered q times on average, q from its
-// predicted contribution throughput x flux; `stats`, if set, adds what the price learns from;
-// `weight_log`, if set, records every sample taken (weight_log.hpp). Each sample's connection
-// is taken up to the geometry term `bound` (share.hpp; the remainder carries the rest).
-// `pair`, with stats: the same VRLs are also gathered under these settings, on the same
-// random numbers, for the statistics alone, not the radiance (EffortStats::pair_delta).
-// `marginal_scores`, if set and VrlMarginal is step one: the gathers' scores, from which the
-// renderer learns EffortSettings::marginal_threshold.
+// order: the camera pass's inner loop, one call of the library's GatherMediumVrls, each VRL's
+// predicted contribution throughput x flux. A pair leaves the sum and the numbers the rest of
+// the path draws as they are without it.
 Spectrum GatherMediumToMedium(vrlis::GatherSamplers method, const Scene& scene, const CameraSegment& seg,
-                              const std::vector<Vrl>& vrls, Rng& rng, QueryLog* log = nullptr,
-                              Spectrum throughput = Spectrum(1.f), const vrlis::EffortSettings& effort = {},
-                              EffortStats* stats = nullptr, WeightLog* weight_log = nullptr,
-                              float bound = kUnbounded, const vrlis::EffortSettings* pair = nullptr,
-                              vrlis::ScoreOctaves* marginal_scores = nullptr);
+                              const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
+                              const GatherOptions& options);
 
 // The medium-to-medium integrand at VRL point v and camera point t (what the gather divides
 // by its two pdfs): exposed so that the comparison can integrate either step by quadrature.
@@ -62,12 +65,10 @@ Spectrum MediumToMediumIntegrand(const Scene& scene, const CameraSegment& seg, c
 // Radiance reflected towards the camera by a diffuse point (normal nf facing the camera,
 // albedo) from light scattered on every VRL, the VRL points by `method` (one uniform
 // each): the sampler is chosen and the point and medium validated once for all the VRLs
-// (the library's GatherSurfaceVrls; effort, stats, weight_log and bound as in
-// GatherMediumToMedium).
+// (the library's GatherSurfaceVrls; options as in GatherMediumToMedium, no pair).
 Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo,
-                               const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput = Spectrum(1.f),
-                               const vrlis::EffortSettings& effort = {}, EffortStats* stats = nullptr,
-                               WeightLog* weight_log = nullptr, float bound = kUnbounded);
+                               const std::vector<Vrl>& vrls, Rng& rng, Spectrum throughput,
+                               const GatherOptions& options);
 
 // Single scattering along the segment from every light (point lights: the camera point by
 // `method`; collimated lights: uniform in distance on the part inside the beam). `after_vertex`: the segment leaves a

@@ -7,12 +7,13 @@
 #include <cstdint>
 
 #include <vrlis/effort/marginal_fits.hpp>
+#include <vrlis/effort/price.hpp>
 
-#include "effort_price.hpp"
 #include "film.hpp"
 #include "pixel_samples.hpp"
 #include "scene.hpp"
 #include "transport.hpp"
+#include "work.hpp"
 
 namespace vrlis::integration {
 
@@ -59,16 +60,16 @@ class Renderer {
 class VrlRenderer : public Renderer {
  public:
   VrlRenderer(const Scene& scene, const RenderSettings& settings)
-      : Renderer(scene, settings), price_(settings.width, settings.height) {}
+      : Renderer(scene, settings), price_(settings.width, settings.height, kVisitWork) {}
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
-  const EffortPrice& effort_price() const { return price_; }
-  void set_effort_price(const EffortPrice& price) { price_ = price; }
+  const vrlis::EffortPrice& effort_price() const { return price_; }
+  void set_effort_price(const vrlis::EffortPrice& price) { price_ = price; }
   // The scores VrlMarginal's fits are given by, learned like the price.
   const vrlis::ScoreOctaves& marginal_scores() const { return marginal_scores_; }
   void set_marginal_scores(const vrlis::ScoreOctaves& scores) { marginal_scores_ = scores; }
 
  private:
-  EffortPrice price_;
+  vrlis::EffortPrice price_;
   vrlis::ScoreOctaves marginal_scores_;  // of the passes rendered so far
 };
 

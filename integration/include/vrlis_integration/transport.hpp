@@ -50,7 +50,7 @@ struct TransportSettings {
   QueryLog* query_log = nullptr;    // if set, records a sample of the medium-to-medium gathers
   WeightLog* weight_log = nullptr;  // if set, records the weights of every VRL gather sample taken
   // The effort control of both VRL gathers (off: every VRL gathered once); its price is the
-  // renderer's, learned pass by pass (effort_price.hpp).
+  // renderer's, learned pass by pass (vrlis/effort/price.hpp).
   vrlis::EffortSettings effort;
   // With VrlMarginal as step one: the share of the medium-to-medium gathers, those of the
   // largest predicted second moments, that take its fit; the rest take VrlPoint's density.

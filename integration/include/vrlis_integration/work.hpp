@@ -8,6 +8,9 @@
 
 namespace vrlis::integration {
 
+// A visit of a VRL gather sample (EffortCall::visit_work): its occlusion ray and connection.
+inline constexpr double kVisitWork = renderer_work::kOccluded + renderer_work::kConnect;
+
 // The work counted on this thread so far.
 inline double& ThreadWork() {
   thread_local double work = 0;

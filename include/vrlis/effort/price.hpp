@@ -1,0 +1,480 @@
+#pragma once
+// The effort control's price learner (docs/maths.md#effort-price): a renderer hands each
+// pixel the settings of Pixel(), feeds its gather calls' records, and after the pass its
+// pixels' values and the work it counted outside the gathers (EndPass); the next pass's
+// settings then come from the passes before it only, so an estimator stays unbiased and a
+// render is a function of its seed (the work is counted, never clocked: work.hpp).
+//
+//   vrlis::EffortPrice price(width, height);
+//   for (int pass = 0; pass < passes; ++pass) {
+//     price.BeginPass(settings);                  // settings.on = true
+//     for each pixel (x, y), its value[i]:
+//       vrlis::PixelEffort effort = price.Pixel(x, y, uniform);
+//       ... vrlis::GatherMediumVrls(..., visit, effort.Medium(weights));  // visit returns its contribution
+//     price.EndPass(values);
+//   }
+//
+// Pixel values are a scalar per pixel (our renderer: the RMS of its RGB), in the units the
+// visitors' contributions and the weights are in. The variance of one pass's pixel estimate
+// is averaged over pixels with the largest thousandth left out (a few fireflies must not flip
+// decisions); per 8 x 8 tile of pixels, the price learns what a whole call and the remainder
+// are worth.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "call.hpp"
+#include "policy.hpp"
+#include "record.hpp"
+#include "work_costs.hpp"
+
+namespace vrlis {
+
+// The two gathers, each with its own calibration and cost: their bounds are not equally tight.
+enum class GatherKind { Medium, Surface };
+
+// One pixel's effort in a pass (EffortPrice::Pixel): the settings of its medium-to-medium and
+// medium-to-surface calls, the statistics-only pair's (EffortPrice::Pairs), the rate of the
+// renderer's remainder paths (RemainderRecord), and the records its calls add to.
+struct PixelEffort {
+  EffortSettings medium, surface, pair;
+  double remainder_rate = 1;
+  double visit_work = work_costs::kVisit;
+  PixelRecord* record = nullptr;
+
+  template <typename Real>
+  EffortCall<Real> Medium(const Real* weights, ScoreOctaves* scores = nullptr) const {
+    return {medium, weights, record ? &record->medium : nullptr, scores, visit_work};
+  }
+  template <typename Real>
+  EffortCall<Real> Surface(const Real* weights) const {
+    return {surface, weights, record ? &record->surface : nullptr, nullptr, visit_work};
+  }
+  // The medium-to-medium VRLs gathered again on the same numbers under the accurate model,
+  // for the statistics alone: the visitor returns the contribution and adds nothing.
+  template <typename Real>
+  EffortCall<Real> Pair(const Real* weights) const {
+    return {pair, weights, record ? &record->pair : nullptr, nullptr, visit_work};
+  }
+};
+
+class EffortPrice {
+ public:
+  // The passes that take every gather once: the first price's variance comes from the one
+  // pass's neighbouring pixels, the next from the passes over time.
+  static constexpr int kMinPasses = 1;
+  static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
+  // Shares of pixels: exploring the rule where the image takes another model, piloting the
+  // cheapest model and the mixture before a price, measuring the mixture under the rule.
+  static constexpr double kExplore = 1.0 / 512, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
+  // Shares of pixels deciding before a price (their bounds calibrate it), and once priced
+  // before any pass decided (a trial of whether decisions pay).
+  static constexpr double kCalibrate = 1.0 / 8, kTrial = 1.0 / 4;
+  // The share of horizontal pixel pairs of the first pass that also gather under the accurate
+  // model (Pairs), and the margin a change to or from that model must pay (its variance and
+  // the rule's differ many-fold, and a render that flips between them pays for the flip).
+  static constexpr double kPairShare = 1.0 / 4, kAccurateMargin = 0.8;
+
+  EffortPrice() = default;
+  // visit_work: the counted work of one of the renderer's visits (EffortCall::visit_work).
+  EffortPrice(int width, int height, double visit_work = work_costs::kVisit)
+      : width_(width),
+        height_(height),
+        pixels_(static_cast<std::size_t>(std::max(width, 0)) * static_cast<std::size_t>(std::max(height, 0))),
+        tiles_x_((width + kTile - 1) / kTile),
+        visit_work_(visit_work) {
+    for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_);
+    const std::size_t tiles = static_cast<std::size_t>(std::max(tiles_x_, 0)) *
+                              static_cast<std::size_t>(std::max((height + kTile - 1) / kTile, 0));
+    for (int kind = 0; kind < 2; ++kind) {
+      tiles_[kind].resize(tiles);
+      call_demand_[kind].assign(tiles, 1.0);
+    }
+    remainder_tiles_.resize(tiles);
+    remainder_demand_.assign(tiles, 1.0);
+    records_.resize(pixels_);
+  }
+
+  // A new pass whose calls take `base` (its `on` true; the rest the renderer's, e.g.
+  // marginal_threshold) with what the price learned; every pixel's record emptied.
+  void BeginPass(const EffortSettings& base) {
+    base_ = base;
+    std::fill(records_.begin(), records_.end(), PixelRecord{});
+  }
+
+  // Pixel (x, y)'s effort in this pass, from six numbers uniform in [0, 1) that uniform()
+  // draws in order (the two gathers' model, their decisions, their measuring of the
+  // mixture): the same numbers give the same settings. Each pixel on one thread at a time.
+  template <typename Uniform>
+  PixelEffort Pixel(int x, int y, Uniform&& uniform) {
+    double u[6];
+    for (double& v : u) v = double(uniform());
+    PixelEffort p;
+    p.visit_work = visit_work_;
+    p.record = &records_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+    for (int k = 0; k < 2; ++k) {
+      EffortSettings& e = k == 0 ? p.medium : p.surface;
+      e = base_;
+      e.price = price_[k], e.within = Within(k), e.call_demand = call_demand_[k][Tile(x, y)];
+      e.model = Model(k, u[k]);
+      e.decide = Decide(k, u[2 + k]);
+      e.measure_mixture = e.model == EffortModel::Chosen && (u[4 + k] < kMeasure || model_[k] != EffortModel::Chosen);
+    }
+    p.pair = p.medium;
+    p.pair.decide = p.pair.measure_mixture = false;
+    p.pair.model = EffortModel::Accurate;
+    // The remainder is split where it asks for more paths, never rouletted: its paths cost too
+    // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
+    const double demand = remainder_demand_[Tile(x, y)];
+    p.remainder_rate = demand > 1 ? std::min(demand, std::max(1.0, base_.ceiling)) : 1.0;
+    return p;
+  }
+
+  // Whether a pixel of `auto` also gathers its medium-to-medium VRLs under the accurate model,
+  // for the statistics alone (PixelEffort::Pair), u uniform in [0, 1) and the same for
+  // horizontal neighbours (x and x + 1, x even): in the first kMinPasses passes, a kPairShare
+  // of them. The image rendered and the image had those gathers taken the accurate model give
+  // both models' variances by one estimator (docs/maths.md#effort-accurate).
+  bool Pairs(double u) const { return passes_ < kMinPasses && u < kPairShare; }
+
+  // One finished pass: each pixel's value (row-major, width x height) and the work the
+  // renderer counted outside its gather calls (the records count theirs).
+  void EndPass(const std::vector<double>& values, double other_work = 0) {
+    Passes& into = passes_of_[passes_ >= kMinPasses];
+    std::vector<EffortRecord> pass_tiles[2][2];  // per kind, undecided or decided, per tile
+    for (auto& kind : pass_tiles)
+      for (auto& part : kind) part.resize(remainder_tiles_.size());
+    std::vector<RemainderRecord> pass_remainder(remainder_tiles_.size());
+    double work = other_work, pairs = 0;
+    for (std::size_t i = 0; i < pixels_; ++i) {
+      const PixelRecord& r = records_[i];
+      const std::size_t tile = Tile(static_cast<int>(i % static_cast<std::size_t>(width_)),
+                                    static_cast<int>(i / static_cast<std::size_t>(width_)));
+      pass_remainder[tile] += r.remainder;
+      work += r.medium.work + r.surface.work;
+      pairs += r.pair.calls;
+      for (int m = 0; m < kEffortModels; ++m) pair_samples_[m] += r.pair.model_samples[m], pair_work_[m] += r.pair.model_work[m];
+      for (int kind = 0; kind < 2; ++kind) {
+        const EffortRecord& p = kind == 0 ? r.medium : r.surface;
+        if (!(p.calls > 0)) continue;
+        const bool decided = price_[kind] > 0 && p.decided > 0;  // the first pass takes every gather once
+        pass_tiles[kind][decided][tile] += p;
+        ++into.called[kind];
+        if (decided) ++into.decided[kind];
+      }
+    }
+    EffortRecord total[2];
+    for (std::size_t tile = 0; tile < remainder_tiles_.size(); ++tile) {
+      remainder_ += pass_remainder[tile];
+      remainder_tiles_[tile] += pass_remainder[tile];
+      for (int kind = 0; kind < 2; ++kind)
+        for (int decided = 0; decided < 2; ++decided) {
+          const EffortRecord& p = pass_tiles[kind][decided][tile];
+          total[kind] += p;
+          tiles_[kind][tile] += p;
+          if (price_[kind] > 0) (decided ? decided_ : undecided_)[kind] += p;
+        }
+    }
+    for (int kind = 0; kind < 2; ++kind) {
+      const EffortRecord& t = total[kind];
+      const double* m = t.model_samples;
+      into.switchable[kind] += m[int(EffortModel::Chosen)] + m[int(EffortModel::Cheapest)] + m[int(EffortModel::Mixture)];
+      into.cheapest[kind] += m[int(EffortModel::Cheapest)], into.mixture[kind] += m[int(EffortModel::Mixture)];
+    }
+    for (std::size_t i = 0; i < pixels_ && i < values.size(); ++i) {
+      const double v = values[i];
+      if (!std::isfinite(v)) continue;
+      into.sum[i] += v, into.sum_sq[i] += v * v;
+    }
+    if (pairs > 0 && width_ >= 2 && values.size() >= pixels_) MeasureAccurate(values);
+    into.work += work;
+    last_pass_work_ = work;
+    ++into.count;
+    for (int kind = 0; kind < 2; ++kind) {
+      gathers_[kind] += total[kind];
+      (price_[kind] > 0 ? controlled_ : uncontrolled_)[kind] += total[kind];
+    }
+    ++passes_;
+    if (passes_ >= kMinPasses) Refresh();
+  }
+
+  // What the price learned: the price of a gather (EffortSettings::price), 0 before
+  // kMinPasses passes; the within share of split gathers' second moments (EffortSettings::
+  // within); a call's demand at pixel (x, y) (EffortSettings::call_demand); the remainder's
+  // paths per camera vertex there; the image's model; whether decisions pay.
+  double price(GatherKind kind) const { return price_[static_cast<int>(kind)]; }
+  double within(GatherKind kind) const { return Within(static_cast<int>(kind)); }
+  double call_demand(GatherKind kind, int x, int y) const { return call_demand_[static_cast<int>(kind)][Tile(x, y)]; }
+  double remainder_demand(int x, int y) const { return remainder_demand_[Tile(x, y)]; }
+  EffortModel model(GatherKind kind) const { return model_[static_cast<int>(kind)]; }
+  bool decisions_pay(GatherKind kind) const { return decisions_pay_[static_cast<int>(kind)]; }
+  int passes() const { return passes_; }
+  // The work the last pass counted, its gathers' and the renderer's own.
+  double pass_work() const { return last_pass_work_; }
+  // The records of the current pass's pixels (row-major), for a renderer's reports.
+  const std::vector<PixelRecord>& records() const { return records_; }
+
+  // What the image's model was chosen from at the last refresh, per pixel and pass: the
+  // variance and work of the rule (the measured mix of models less the others' shares), and
+  // each alternative's change of both against it and its share of the measured samples;
+  // `known` false where it could not be estimated (docs/maths.md#effort-models).
+  struct ModelChange {
+    EffortModel model = EffortModel::Chosen;
+    double dv = 0, dt = 0, share = 0;
+    bool known = false;
+  };
+  struct ModelWeighing {
+    double v_rule = 0, t_rule = 0;  // 0 where the measurements gave no estimate
+    ModelChange cheapest{EffortModel::Cheapest}, mixture{EffortModel::Mixture}, accurate{EffortModel::Accurate};
+  };
+  const ModelWeighing& model_weighing(GatherKind kind) const { return weighing_[static_cast<int>(kind)]; }
+
+ private:
+  // Of the first kMinPasses passes, or of those after: per pixel, the sums of a pass's value
+  // and its square, and the passes' work; per kind, the pixels that called its gathers and
+  // those that decided them under a price, and the samples below the accurate tier and those
+  // of them the cheapest model and the mixture took.
+  struct Passes {
+    std::vector<double> sum, sum_sq;
+    double work = 0;
+    int count = 0;
+    double called[2] = {0, 0}, decided[2] = {0, 0};
+    double switchable[2] = {0, 0}, cheapest[2] = {0, 0}, mixture[2] = {0, 0};
+  };
+
+  std::size_t Tile(int x, int y) const {
+    return static_cast<std::size_t>(y / kTile) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(x / kTile);
+  }
+  double Within(int k) const {
+    const EffortRecord& g = gathers_[k];
+    return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;  // 1 before any split
+  }
+  // The model of `auto`'s gathers for a pixel, u uniform in [0, 1): the image's, and the rule
+  // with probability kExplore where that is another; before any price the cheapest model and
+  // the mixture each with probability kPilot (their work is measured once).
+  EffortModel Model(int k, double u) const {
+    if (passes_ < kMinPasses) return u < kPilot ? EffortModel::Cheapest : u < 2 * kPilot ? EffortModel::Mixture : EffortModel::Chosen;
+    return u < kExplore ? EffortModel::Chosen : model_[k];
+  }
+  // Whether a pixel's gathers are decided one by one: before a price with probability
+  // kCalibrate (unpriced, a decided gather is taken once and only its bounds cost); priced
+  // but before any pass decided, kTrial; then where decisions pay, else kExplore.
+  bool Decide(int k, double u) const {
+    if (passes_ < kMinPasses) return u < kCalibrate;
+    if (!(passes_of_[1].decided[k] > 0)) return u < kTrial;
+    return decisions_pay_[k] || u < kExplore;
+  }
+  const Passes& measured() const { return passes_of_[1].count >= 2 ? passes_of_[1] : passes_of_[0]; }
+  double value_of_time() const { return variance_ > 0 ? pixel_cost_ / variance_ : 0; }
+
+  static double TrimmedMean(std::vector<double> values) {
+    if (values.empty()) return 0;
+    const std::size_t kept = values.size() - values.size() / 1000;
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(kept) - 1, values.end());
+    double sum = 0;
+    for (std::size_t k = 0; k < kept; ++k) sum += values[k];
+    return sum / double(kept);
+  }
+  // Half the squared difference of horizontal neighbours (x and x + 1, x even; edges overstate
+  // it), trimmed; of the pairs whose first pixel `use` flags, if given.
+  double NeighbourVariance(const std::vector<double>& values, const std::vector<bool>* use = nullptr) const {
+    std::vector<double> pairs;
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x + 1 < width_; x += 2) {
+        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+        if (use && !(*use)[i]) continue;
+        const double d = values[i] - values[i + 1];
+        pairs.push_back(d * d / 2);
+      }
+    return TrimmedMean(std::move(pairs));
+  }
+  // The paired pixels' accurate image against the whole rendered one: over the paired pixels
+  // alone the rendered image's rare large samples, which the accurate image lacks, would
+  // make the difference's noise.
+  void MeasureAccurate(const std::vector<double>& values) {
+    std::vector<double> accurate(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(pixels_));
+    std::vector<bool> paired(pixels_);
+    for (std::size_t i = 0; i < pixels_; ++i) {
+      const PixelRecord& r = records_[i];
+      accurate[i] += r.pair.sum - r.medium.sum;
+      paired[i] = r.pair.calls > 0 && (i % static_cast<std::size_t>(width_)) + 1 < static_cast<std::size_t>(width_) &&
+                  records_[i + 1].pair.calls > 0;
+    }
+    const double change = NeighbourVariance(accurate, &paired) - NeighbourVariance(values);
+    if (std::isfinite(change)) accurate_change_ = change;
+  }
+
+  void Refresh() {
+    const Passes& p = measured();
+    const double n = p.count;
+    double variance = 0;
+    if (n >= 2) {
+      std::vector<double> pixels(pixels_);
+      for (std::size_t i = 0; i < pixels_; ++i) {  // each pixel's variance over the passes
+        const double mean = p.sum[i] / n;
+        pixels[i] = std::max(0.0, (p.sum_sq[i] - n * mean * mean) / (n - 1));
+      }
+      variance = TrimmedMean(std::move(pixels));
+    } else {
+      if (width_ < 2) return;
+      variance = NeighbourVariance(p.sum);
+    }
+    variance_ = variance, pixel_cost_ = p.work / (n * double(pixels_));
+    for (int kind = 0; kind < 2; ++kind) {
+      const EffortRecord& g = gathers_[kind];
+      const EffortRecord& u = uncontrolled_[kind];
+      const EffortRecord& c = controlled_[kind];
+      // One gather's cost, its decision's included, from the passes that took every gather once
+      // (the controlled passes charge the decisions of the gathers not taken to those taken, a
+      // feedback), scaled to the models the controlled passes chose by their sampling work.
+      auto sampling = [](const EffortRecord& s) { return s.samples > 0 ? s.sample_work / s.samples : 0.0; };
+      const double models = sampling(c) > 0 && sampling(u) > 0 ? sampling(c) / sampling(u) : 1;
+      const double gather_cost = u.samples > 0 ? models * u.work / u.samples : 0;
+      const double calibration = g.predicted > 0 ? g.measured / g.predicted : 0;
+      price_[kind] = variance > 0 && gather_cost > 0 && calibration > 0 ? calibration * pixel_cost_ / (variance * gather_cost) : 0;
+    }
+    for (int kind = 0; kind < 2; ++kind) {
+      weighing_[kind] = WeighModels(kind);
+      model_[kind] = ChooseModel(kind, weighing_[kind]);
+      decisions_pay_[kind] = DecisionsPay(kind);
+      for (std::size_t tile = 0; tile < call_demand_[kind].size(); ++tile) call_demand_[kind][tile] = CallDemand(kind, tile);
+    }
+    for (std::size_t tile = 0; tile < remainder_demand_.size(); ++tile) remainder_demand_[tile] = RemainderDemand(tile);
+  }
+
+  // EARS's splitting factor of the remainder's paths at a camera vertex of a tile:
+  // sqrt((second moment / work of one path) x (pixel cost / pixel variance)), the work of all
+  // paths while the tile has traced few (docs/maths.md#effort-remainder).
+  double RemainderDemand(std::size_t t) const {
+    const RemainderRecord& tile = remainder_tiles_[t];
+    constexpr double kFewPaths = 16;  // below which a tile's cost is too noisy
+    const RemainderRecord& counted = tile.paths >= kFewPaths ? tile : remainder_;
+    const double cost = counted.paths > 0 ? counted.work / counted.paths : 0;
+    if (!(value_of_time() > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
+    return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
+  }
+
+  // A call's demand in a tile: sqrt((second moment / decision work of a taken call) x (pixel
+  // cost / pixel variance)), the kind's work while the tile has taken few (docs/maths.md#effort-calls).
+  double CallDemand(int kind, std::size_t t) const {
+    const EffortRecord& tile = tiles_[kind][t];
+    const EffortRecord& all = gathers_[kind];
+    auto decisions = [](const EffortRecord& s) { return (s.work - s.sample_work) / s.call_rate; };
+    constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy
+    const double cost = tile.call_rate >= kFewCalls ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
+    if (!(value_of_time() > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;
+    return std::sqrt(tile.call_m2 / tile.calls / cost * value_of_time());
+  }
+
+  ModelWeighing WeighModels(int k) const {
+    ModelWeighing w;
+    const EffortRecord& all = gathers_[k];
+    // The models' work per sample from the first passes only, where each took every gather
+    // once in whole batches: a controlled pass takes the image's model in the small batches
+    // roulette leaves, at a higher cost per sample that the others, not taken, never show.
+    const EffortRecord& pilot = uncontrolled_[k];
+    const Passes& p = measured();
+    const double switchable = p.switchable[k];
+    constexpr int kRule = int(EffortModel::Chosen), kCheapest = int(EffortModel::Cheapest);
+    constexpr int kMixture = int(EffortModel::Mixture), kAccurate = int(EffortModel::Accurate);
+    const double all_rule = all.model_samples[kRule] - all.mixture_measured;
+    const double pilot_rule = pilot.model_samples[kRule] - pilot.mixture_measured;
+    if (!(all_rule > 0 && pilot_rule > 0 && switchable > 0 && variance_ > 0 && pixel_cost_ > 0)) return w;
+    // Per pixel and pass, what a model changes against the rule were every sample below the
+    // accurate tier taken with it: the variance it adds (estimated from the rule's samples) and
+    // its work over the rule's; and its share of those samples in the measured passes.
+    const double samples = switchable / (p.count * double(pixels_));
+    const double rule_work = pilot.model_work[kRule] / pilot_rule;
+    auto change = [&](ModelChange& c, double excess, double measured, int model, double share) {
+      const double taken = pilot.model_samples[model];
+      if (!(measured > 0 && taken > 0)) return;
+      c.dv = samples * excess / measured, c.dt = samples * (pilot.model_work[model] / taken - rule_work);
+      c.share = share, c.known = true;
+    };
+    change(w.cheapest, all.cheapest_excess, all.model_samples[kRule], kCheapest, p.cheapest[k] / switchable);
+    change(w.mixture, all.mixture_excess, all.mixture_measured, kMixture, p.mixture[k] / switchable);
+    // The accurate model's variance from the pairs' image (medium gathers, first priced refresh
+    // only), its work from the pairs' own. The pairs' image is against the first pass's, whose
+    // pilots took the cheapest model and the mixture: its change against the rule adds theirs.
+    if (k == int(GatherKind::Medium) && passes_ == kMinPasses && !std::isnan(accurate_change_) &&
+        pair_samples_[kAccurate] > 0)
+      w.accurate = {EffortModel::Accurate,
+                    accurate_change_ + w.cheapest.share * w.cheapest.dv + w.mixture.share * w.mixture.dv,
+                    samples * (pair_work_[kAccurate] / pair_samples_[kAccurate] - rule_work), 0, true};
+    // The measured variance and cost are of a mix, each model's share of the samples with its
+    // change and the rest with the rule's: the states compared whole, not to first order.
+    w.v_rule = variance_, w.t_rule = pixel_cost_;
+    for (const ModelChange* c : {&w.cheapest, &w.mixture, &w.accurate}) w.v_rule -= c->share * c->dv, w.t_rule -= c->share * c->dt;
+    return w;
+  }
+
+  // The model with the least V x T; the accurate one weighed once, at the first price, and
+  // kept (a render that flips between it and the rule pays for the flip).
+  EffortModel ChooseModel(int k, const ModelWeighing& w) const {
+    if (model_[k] == EffortModel::Accurate) return EffortModel::Accurate;
+    if (!(w.v_rule > 0 && w.t_rule > 0)) return EffortModel::Chosen;  // none, or estimates that contradict the measurement
+    auto score = [](const ModelChange& c, double product) {
+      return c.model == EffortModel::Accurate ? product / kAccurateMargin : product;
+    };
+    EffortModel best = EffortModel::Chosen;
+    double least = w.v_rule * w.t_rule;
+    for (const ModelChange* c : {&w.cheapest, &w.mixture, &w.accurate}) {
+      const double v = w.v_rule + c->dv, product = v * (w.t_rule + c->dt);
+      if (c->known && v > 0 && score(*c, product) < least) least = score(*c, product), best = c->model;
+    }
+    return best;
+  }
+
+  // Whether deciding gathers one by one pays: the variance the decisions add (negative:
+  // remove) and their work against each gather taken once, both states compared whole
+  // (docs/maths.md#effort-decide).
+  bool DecisionsPay(int k) const {
+    const EffortRecord& d = decided_[k];
+    const EffortRecord& once = undecided_[k];
+    const double decided_pixels = passes_of_[1].decided[k];
+    if (!(decided_pixels > 0 && variance_ > 0 && pixel_cost_ > 0)) return true;
+    const EffortRecord& counted = d.samples > 0 ? d : uncontrolled_[k];
+    const double sample_cost = counted.samples > 0 ? counted.sample_work / counted.samples : 0;
+    const double loop = once.vrls > 0 ? (once.work - once.sample_work) / once.vrls : 0;
+    const double work = (d.work - d.sample_work) - d.vrls * loop + (d.samples - d.vrls) * sample_cost;
+    const Passes& p = measured();
+    const double scale = p.called[k] / (p.count * double(pixels_)) / decided_pixels;
+    const double dv = scale * (d.roulette_excess + Within(k) * d.split_excess), dt = scale * work;
+    const double decided_share = p.called[k] > 0 ? p.decided[k] / p.called[k] : 0;
+    const double v_once = variance_ - decided_share * dv, t_once = pixel_cost_ - decided_share * dt;
+    if (!(v_once > 0)) return true;   // the variance they add estimated above the whole: keep them
+    if (!(t_once > 0)) return false;  // the time they take estimated above the whole
+    return (v_once + dv) * (t_once + dt) < v_once * t_once;
+  }
+
+  int width_ = 0, height_ = 0, passes_ = 0;
+  std::size_t pixels_ = 0;
+  int tiles_x_ = 0;
+  double visit_work_ = work_costs::kVisit;
+  EffortSettings base_;
+  std::vector<PixelRecord> records_;  // the current pass's, per pixel
+  Passes passes_of_[2];
+  double variance_ = 0, pixel_cost_ = 0, last_pass_work_ = 0;
+  EffortRecord gathers_[2];
+  std::vector<EffortRecord> tiles_[2];
+  EffortRecord uncontrolled_[2];  // of the first kMinPasses passes, which took every gather once
+  EffortRecord controlled_[2];    // of the passes after
+  EffortRecord decided_[2], undecided_[2];  // of those passes' pixels that decided their gathers, and the rest
+  double pair_samples_[kEffortModels] = {}, pair_work_[kEffortModels] = {};  // the pairs' samples and work, by model
+  double price_[2] = {0, 0};
+  EffortModel model_[2] = {EffortModel::Chosen, EffortModel::Chosen};
+  ModelWeighing weighing_[2];
+  bool decisions_pay_[2] = {true, true};
+  // The variance of a pixel per pass had the medium-to-medium gathers of the first pass taken
+  // the accurate model, less that of the image rendered; NaN before a pass paired them.
+  double accurate_change_ = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> call_demand_[2], remainder_demand_;
+  std::vector<RemainderRecord> remainder_tiles_;
+  RemainderRecord remainder_;
+};
+
+}  // namespace vrlis
