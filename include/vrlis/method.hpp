@@ -45,6 +45,16 @@ struct GatherSamplers {
   friend bool operator==(GatherSamplers a, GatherSamplers b) { return a.segment == b.segment && a.vrl == b.vrl; }
 };
 
+// A pair fixed at compile time: a gather call given one compiles that pair alone, where one
+// given GatherSamplers compiles every registered pair (a build of a few seconds against most of
+// a minute). It converts to the GatherSamplers it names.
+template <typename CameraEntry, typename VrlEntry = VrlPointEntry>
+struct FixedSamplers {
+  using Camera = CameraEntry;
+  using Vrl = VrlEntry;
+  constexpr operator GatherSamplers() const { return {SegmentSamplers::Of<CameraEntry>(), VrlSamplers::Of<VrlEntry>()}; }
+};
+
 inline std::string Name(GatherSamplers m) {
   std::string name(m.segment.name());
   if (m.vrl != VrlSamplers::Of<VrlPointEntry>()) (name += "+") += m.vrl.name();

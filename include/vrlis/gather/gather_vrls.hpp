@@ -38,6 +38,19 @@ struct NonDeduced {
   using type = T;
 };
 
+// The camera sampler of a surface gather's samplers, and a call of f(Entry{}) with its entry:
+// chosen at run time, or fixed at compile time (that entry alone compiled).
+inline SegmentChoice CameraSamplerOf(SegmentChoice c) { return c; }
+inline SegmentChoice CameraSamplerOf(GatherSamplers s) { return s.segment; }
+template <typename Camera, typename Vrl>
+constexpr SegmentChoice CameraSamplerOf(FixedSamplers<Camera, Vrl>) { return SegmentSamplers::Of<Camera>(); }
+template <typename F>
+decltype(auto) WithCameraSampler(SegmentChoice c, F&& f) { return SegmentSamplers::WithEntry(c, f); }
+template <typename F>
+decltype(auto) WithCameraSampler(GatherSamplers s, F&& f) { return SegmentSamplers::WithEntry(s.segment, f); }
+template <typename Camera, typename Vrl, typename F>
+decltype(auto) WithCameraSampler(FixedSamplers<Camera, Vrl>, F&& f) { return f(Camera{}); }
+
 // Samples of VRLs waiting for their batched gather: VRL index, effort weight, numbers.
 template <typename Real, int kUniforms>
 struct GatherBatch {
@@ -226,12 +239,14 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
 // visit(i, sample, effort_weight) for every sample taken (an invalid query takes none),
 // controlled by `effort` (effort/call.hpp; by default the control is off and nothing learns).
-template <typename Real, typename Uniform, typename Visit>
-void GatherMediumVrls(GatherSamplers samplers, const RaySegment<Real>& camera, const Medium<Real>& medium,
+// `samplers`: GatherSamplers (chosen at run time, every pair compiled) or FixedSamplers (one).
+template <typename Samplers, typename Real, typename Uniform, typename Visit>
+void GatherMediumVrls(Samplers samplers, const RaySegment<Real>& camera, const Medium<Real>& medium,
                       const VrlSegment<Real>* vrls, int count, Uniform&& uniform, Visit&& visit,
                       const EffortCall<typename detail::NonDeduced<Real>::type>& effort = {}) {
   const bool valid = Validate(camera) == QueryError::None && Validate(medium) == QueryError::None;
   const EffortSettings& settings = effort.settings;
+  const GatherSamplers named = samplers;
   WithGatherSamplers<Real>(samplers, [&](auto step_one, auto step_two) {
     using VrlSampler = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
@@ -269,7 +284,7 @@ void GatherMediumVrls(GatherSamplers samplers, const RaySegment<Real>& camera, c
           if (quick || tight) MediumGatherBounds(camera, vrls + first, n, medium, quick, tight);
         },
         [&](EffortModel model, const auto& b, GatherSample<Real>* samples) {
-          const SegmentChoice taken = SegmentSamplerFor(samplers.segment, model);
+          const SegmentChoice taken = SegmentSamplerFor(named.segment, model);
           // Its counted work: each sample's, VrlMarginal's fit where it takes one.
           auto with = [&](auto one, auto two, const bool* fitted = nullptr) {
             using One = typename decltype(one)::type;
@@ -301,14 +316,16 @@ void GatherMediumVrls(GatherSamplers samplers, const RaySegment<Real>& camera, c
 }
 
 // The medium-to-surface gathers of vrls[0, count) at the point (normal facing the viewer),
-// the VRL points by `sampler`, as GatherMediumVrls.
-template <typename Real, typename Uniform, typename Visit>
-void GatherSurfaceVrls(SegmentChoice sampler, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
+// the VRL points by `samplers`' camera sampler (SegmentChoice, GatherSamplers or
+// FixedSamplers), as GatherMediumVrls.
+template <typename Samplers, typename Real, typename Uniform, typename Visit>
+void GatherSurfaceVrls(Samplers samplers, Vec3<Real> point, Vec3<Real> normal, const Medium<Real>& medium,
                        const VrlSegment<Real>* vrls, int count, Uniform&& uniform, Visit&& visit,
                        const EffortCall<typename detail::NonDeduced<Real>::type>& effort = {}) {
   const bool measure_mixture = effort.settings.measure_mixture;
   const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
-  SegmentSamplers::WithEntry(sampler, [&](auto entry) {
+  const SegmentChoice sampler = detail::CameraSamplerOf(samplers);
+  detail::WithCameraSampler(samplers, [&](auto entry) {
     using Chosen = typename decltype(entry)::template Sampler<Real>;
     constexpr bool policy = std::is_same_v<Chosen, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<1, policy>(

@@ -61,6 +61,10 @@ decltype(auto) WithGatherSamplers(GatherSamplers method, F&& f) {
     });
   });
 }
+template <typename Real, typename Camera, typename Vrl, typename F>
+decltype(auto) WithGatherSamplers(FixedSamplers<Camera, Vrl>, F&& f) {
+  return f(Type<typename Vrl::template Sampler<Real>>{}, Type<typename Camera::template Sampler<Real>>{});
+}
 
 // The gather's outcome for step one's sample v and step two's sample t (either may be
 // unusable). kLanes: branch-free for a loop over a batch's gathers, and the caller empties
