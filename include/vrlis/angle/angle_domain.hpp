@@ -78,10 +78,12 @@ template <bool kLanes, typename Real>
   f.h = h = Pick<kLanes>(h < floor, floor, h);
   f.tan_a = (tmin - f.u0) / h;
   f.stretch = h + (tmin - f.u0) * f.tan_a;  // h (1 + A^2), from two non-negative terms
+  // OffsetOfSlope's two arguments times h (an arctangent of a ratio does not see the common
+  // factor): the slopes' two divisions are off the chain every fit waits on.
   if constexpr (kLanes) {
-    f.width = SelectLanes(bounded, OffsetOfSlope(f.tan_a, (tmax - tmin) / h, (tmax - f.u0) / h), Atan2Lanes(Real(1), f.tan_a));
+    f.width = SelectLanes(bounded, Atan2Lanes(tmax - tmin, h + f.tan_a * (tmax - f.u0)), Atan2Lanes(Real(1), f.tan_a));
   } else {
-    f.width = bounded ? OffsetOfSlope(f.tan_a, (tmax - tmin) / h, (tmax - f.u0) / h) : Atan2Lanes(Real(1), f.tan_a);
+    f.width = bounded ? Atan2Lanes(tmax - tmin, h + f.tan_a * (tmax - f.u0)) : Atan2Lanes(Real(1), f.tan_a);
   }
   return f;
 }

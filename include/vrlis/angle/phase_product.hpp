@@ -215,7 +215,8 @@ class PhaseProduct {
   }
   Real lower_pole() const { return lower_; }  // the offset of theta = -pi/2
 
-  template <int kSize>
+  // kShapes false: without the lobes' shapes, which only evaluate() needs (the Cauchy fits).
+  template <int kSize, bool kShapes = true>
   struct Lanes;
 
   // Each lobe's largest value, as a numerator over a denominator: a fit that needs both the
@@ -248,7 +249,7 @@ class PhaseProduct {
 // (MediumToMediumQuery). Each lane holds what the constructor and evaluate() compute for its
 // query, in the same operations (square roots by Newton steps in lanes: within 3 ulp).
 template <typename Real>
-template <int kSize>
+template <int kSize, bool kShapes>
 struct PhaseProduct<Real>::Lanes {
   Real width[kSize], lower[kSize], upper[kSize], theta_e[kSize], r[kSize], one_minus_r[kSize];
   // The two lobes' detail::LobeShape, one array per number (the scale is g's alone).
@@ -270,6 +271,7 @@ struct PhaseProduct<Real>::Lanes {
           {axis_x[i], axis_y[i], axis_z[i]}, {frames.nx[i], frames.ny[i], frames.nz[i]}, dir, A, frames.on_line[i] != 0);
       width[i] = frames.width[i], lower[i] = poles.lower, upper[i] = poles.upper;
       theta_e[i] = lobe.theta_e, r[i] = lobe.r, one_minus_r[i] = lobe.one_minus_r;
+      if constexpr (!kShapes) continue;
       const auto a = detail::LobeShape<Real>::Of(g, 1, 0, SinCosLanes<kAccuracy>(poles.lower / 2));
       const auto b = detail::LobeShape<Real>::Of(g, lobe.r, lobe.one_minus_r, SinCosLanes<kAccuracy>(lobe.theta_e / 2));
       a_sin[i] = a.from_sin, a_cos[i] = a.from_cos, a_base[i] = a.base, a_slope[i] = a.slope;

@@ -123,8 +123,9 @@ struct FitsInLanes<SegmentSampler<D>, std::void_t<typename D::template TargetLan
 // their angle domains (all against the one camera segment), their fits and offsets, then their
 // points and the integrands. The first and the last run in vector lanes too, to rounding the
 // one-at-a-time numbers (lane_math.hpp); so do the fits of every sampler whose distribution
-// has a form in lanes (FitsInLanes: Novák's, FullProduct's and the Cauchy fits; their
-// closed-form inversions stay one gather at a time), the others' one gather at a time. One
+// has a form in lanes (FitsInLanes: Novák's and FullProduct's, their closed-form inversions
+// one gather at a time; the Cauchy samplers' fits and inversions, their sines one gather at a
+// time), the others' one gather at a time. One
 // gather is a long chain of dependent operations and one vector of lanes is still one chain;
 // the gathers of a phase are independent, and several vectors of them let the processor
 // overlap their chains (lanes over 8 gathers at a time gained 10%, over 32 a factor 2 for

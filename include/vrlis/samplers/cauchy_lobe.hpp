@@ -47,11 +47,14 @@ class TruncatedCauchy {
   // The delta whose primitive is s, for s in [0, mass()]: delta cos s = Re(delta) sin s.
   // Solved in double for float: next to a narrow peak the denominator cancels, and a float
   // solve would reverse neighbouring samples.
-  Real inverse_primitive(Real s) const {
+  Real inverse_primitive(Real s) const { return inverse_primitive<false>(WidenedSinCos(s)); }
+  // The same from (sin s, cos s); kLanes: branch-free, for a loop over a batch's samples.
+  template <bool kLanes>
+  [[gnu::always_inline]] Real inverse_primitive(SinCosPair<Widened<Real>> e) const {
     using W = Widened<Real>;
-    SinCosPair<W> e = WidenedSinCos(s);
-    W ratio = W(location_) * inv_scale_, denom = e.cos + ratio * e.sin;
-    return denom > 0 ? Clamp(Real((scale_ + location_ * ratio) * e.sin / denom), Real(0), width_) : width_;
+    const W ratio = W(location_) * inv_scale_, denom = e.cos + ratio * e.sin;
+    const Real delta = Real((scale_ + location_ * ratio) * e.sin / denom);
+    return Pick<kLanes>(denom > 0, PickClamp<kLanes>(delta, Real(0), width_), width_);
   }
   Real mass() const { return mass_; }
   Real location() const { return location_; }
@@ -131,7 +134,7 @@ struct CauchyLobesLanes {
   Real location[2][kSize], scale[2][kSize], inv_scale[2][kSize], mass[2][kSize];
   std::int32_t count[kSize];
 
-  CauchyLobesLanes(const typename PhaseProduct<Real>::template Lanes<kSize>& target, int lanes) {
+  CauchyLobesLanes(const typename PhaseProduct<Real>::template Lanes<kSize, false>& target, int lanes) {
     const Real g = target.g, ag = std::abs(g);
     const PhaseFraction<Real> segment_value{HenyeyGreensteinPeak(g), 1};
     for (int i = 0; i < lanes; ++i) {
@@ -152,6 +155,10 @@ struct CauchyLobesLanes {
     }
   }
 
+  // Lobe k of lane i over [0, width] (whether kept or not: count[i] says).
+  [[gnu::always_inline]] TruncatedCauchy<Real> lobe(int k, int i, Real width) const {
+    return TruncatedCauchy<Real>(location[k][i], scale[k][i], inv_scale[k][i], width, mass[k][i]);
+  }
   // Lane i's fit over [0, width].
   CauchyLobes<Real> lobes(int i, Real width) const {
     CauchyLobes<Real> out;

@@ -24,14 +24,32 @@ class CauchySumAngle {
     for (int k = 0; k < fit_.count; ++k) mass_ += fit_.lobe[k].mass();
   }
 
-  // A batch's fits in vector lanes (CauchyLobesLanes), each then sampled at u[i] one lane
-  // at a time: out[i] is sample_pdf(u[i]) of lane i's query, to rounding.
+  // A batch's fits and samples in vector lanes (CauchyLobesLanes): out[i] is sample_pdf(u[i])
+  // of lane i's query, to rounding. The two-lobe quadratic runs in the lanes, its sines one
+  // lane at a time (libm's: the same numbers, and the same order of samples, as one query at
+  // a time); a lane with fewer lobes (g = 0, or a flat lobe) is sampled as one query after.
   template <int kSize>
-  using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize>;
+  using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize, false>;
   template <int kSize>
   static void SampleLanes(const TargetLanes<kSize>& target, const Real* u, int lanes, SegmentSample<Real>* out) {
     const CauchyLobesLanes<Real, kSize> fits(target, lanes);
-    for (int i = 0; i < lanes; ++i) out[i] = CauchySumAngle(fits.lobes(i, target.width[i]), target.width[i]).sample_pdf(u[i]);
+    Real turn[kSize];
+    for (int i = 0; i < lanes; ++i) {
+      const Real w = target.width[i], mass = fits.mass[0][i] + fits.mass[1][i];
+      turn[i] = Turn<true>(Centre<true>(fits.lobe(0, i, w), fits.lobe(1, i, w), w), u[i] * mass, mass, w);
+    }
+    Widened<Real> sin[kSize], cos[kSize];
+    for (int i = 0; i < lanes; ++i) {
+      const SinCosPair<Widened<Real>> e = WidenedSinCos(turn[i]);
+      sin[i] = e.sin, cos[i] = e.cos;
+    }
+    for (int i = 0; i < lanes; ++i) {
+      const Real w = target.width[i];
+      out[i] = SampleQuadratic<true>(fits.lobe(0, i, w), fits.lobe(1, i, w), w, fits.mass[0][i] + fits.mass[1][i],
+                                     {sin[i], cos[i]});
+    }
+    for (int i = 0; i < lanes; ++i)
+      if (fits.count[i] != 2) out[i] = CauchySumAngle(fits.lobes(i, target.width[i]), target.width[i]).sample_pdf(u[i]);
   }
 
   Real sample(Real u) const {
@@ -39,12 +57,17 @@ class CauchySumAngle {
       case 0: return u * width_;
       case 1: return fit_.lobe[0].inverse_primitive(u * mass_);
     }
-    return SampleQuadratic(u * mass_).t;
+    return sample_pdf(u).t;
   }
 
   // The two-lobe density from the offsets to both peaks the quadratic was written in.
   SegmentSample<Real> sample_pdf(Real u) const {
-    if (fit_.count == 2) return SampleQuadratic(u * mass_);
+    if (fit_.count == 2) {
+      const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
+      const Real s = u * mass_;
+      return SampleQuadratic<false>(c1, c2, width_, mass_,
+                                    WidenedSinCos(Turn<false>(Centre<false>(c1, c2, width_), s, mass_, width_)));
+    }
     Real delta = sample(u);
     return {delta, pdf(delta)};
   }
@@ -70,27 +93,35 @@ class CauchySumAngle {
   // c is the narrower peak if it lies inside the interval (coefficients of the size of its
   // scale: a narrow lobe far from theta_a keeps its digits) and otherwise the nearer end
   // (F(c) is then exactly 0 or the whole mass: a tiny interval keeps its digits).
+  template <bool kLanes>
+  [[gnu::always_inline]] static Real Centre(const TruncatedCauchy<Real>& c1, const TruncatedCauchy<Real>& c2, Real width) {
+    return PickClamp<kLanes>(Pick<kLanes>(c1.scale() < c2.scale(), c1.location(), c2.location()), Real(0), width);
+  }
+  // The angle whose sine and cosine SampleQuadratic takes for s: s itself, or s - F(c) where
+  // c is the far end (inside, F(c) is a rotation of them, not an arctangent).
+  template <bool kLanes>
+  [[gnu::always_inline]] static Real Turn(Real c, Real s, Real mass, Real width) {
+    return Pick<kLanes>(c == width, s - mass, s);
+  }
   // In float the root is solved in double: K is monotone in u, but a float solve of an
   // ill-conditioned quadratic is not, and where the density is low its errors reverse samples.
   // Returns the offset and its density (pdf()), the latter from x and the offsets e_k.
-  SegmentSample<Real> SampleQuadratic(Real s) const {
+  // kLanes: branch-free, for a loop over a batch's samples.
+  template <bool kLanes>
+  [[gnu::always_inline]] static SegmentSample<Real> SampleQuadratic(const TruncatedCauchy<Real>& c1,
+                                                                    const TruncatedCauchy<Real>& c2, Real width,
+                                                                    Real mass, SinCosPair<Widened<Real>> e) {
     using W = Widened<Real>;
-    const TruncatedCauchy<Real>&c1 = fit_.lobe[0], &c2 = fit_.lobe[1];
-    Real c = Clamp((c1.scale() < c2.scale() ? c1 : c2).location(), Real(0), width_);
+    const Real c = Centre<kLanes>(c1, c2, width);
     W e1 = W(c) - c1.location(), e2 = W(c) - c2.location(), g1 = c1.scale(), g2 = c2.scale();
     W p1 = g1 * g1 + e1 * e1, p2 = g2 * g2 + e2 * e2;
     // (cos K, sin K) up to a positive factor (the equation is homogeneous in them). Inside,
     // F(c) = arg z1(c) + arg z2(c) = arg w with w = z1(c) z2(c), z_k(c) = Re_k(c) + i c, so
     // e^{iK} is e^{is} rotated back by w: no arctangent for F(c).
-    SinCosPair<W> e = WidenedSinCos(c == width_ ? s - mass_ : s);
-    W sn = e.sin, cs = e.cos;
-    if (c > 0 && c < width_) {
-      W r1 = g1 - W(c1.location()) * e1 * W(c1.inv_scale()), r2 = g2 - W(c2.location()) * e2 * W(c2.inv_scale());
-      W re = r1 * r2 - W(c) * W(c), im = W(c) * (r1 + r2);
-      W rotated_cs = cs * re + sn * im;
-      sn = sn * re - cs * im;
-      cs = rotated_cs;
-    }
+    const bool inside = (c > 0) & (c < width);
+    W r1 = g1 - W(c1.location()) * e1 * W(c1.inv_scale()), r2 = g2 - W(c2.location()) * e2 * W(c2.inv_scale());
+    W re = r1 * r2 - W(c) * W(c), im = W(c) * (r1 + r2);
+    W cs = Pick<kLanes>(inside, e.cos * re + e.sin * im, e.cos), sn = Pick<kLanes>(inside, e.sin * re - e.cos * im, e.sin);
     W a = (g2 * e1 + g1 * e2) * cs - (e1 * e2 - g1 * g2) * sn;
     W b = (g2 * p1 + g1 * p2) * cs - (p1 * e2 + p2 * e1) * sn;
     W c0 = -p1 * p2 * sn;
@@ -104,19 +135,19 @@ class CauchySumAngle {
       b *= inv_norm;
       c0 *= inv_norm;
     }
-    W root = SafeSqrt(b * b - 4 * a * c0);
+    W root = PickSqrt<kLanes>(Pick<kLanes>(b * b - 4 * a * c0 > 0, b * b - 4 * a * c0, W(0)));
     // The root where the argument crosses K increasing, (-b + root) / (2a), in whichever
     // form does not cancel (selected, not branched: the sign of b is random across queries).
-    bool positive = b > 0;
-    W x = (positive ? -2 * c0 : root - b) / (positive ? b + root : 2 * a);
+    const bool positive = b > 0;
+    W x = Pick<kLanes>(positive, -2 * c0, root - b) / Pick<kLanes>(positive, b + root, 2 * a);
     Real delta = Real(c + x);
-    if (!(delta >= 0 && delta <= width_)) {  // clamped (NaN to 0): the density where it lands
-      delta = delta >= 0 ? width_ : Real(0);
-      return {delta, pdf(delta)};
-    }
+    // Clamped (NaN to 0): the density where it lands.
+    const bool landed = (delta >= 0) & (delta <= width);
+    delta = Pick<kLanes>(landed, delta, Pick<kLanes>(delta >= 0, width, Real(0)));
+    x = Pick<kLanes>(landed, x, W(delta) - W(c));
     // gamma_k / ((delta - mu_k)^2 + gamma_k^2) for both lobes, over one division.
     W q1 = Sqr(e1 + x) + g1 * g1, q2 = Sqr(e2 + x) + g2 * g2;
-    return {delta, Real((g1 * q2 + g2 * q1) / (q1 * q2 * W(mass_)))};
+    return {delta, Real((g1 * q2 + g2 * q1) / (q1 * q2 * W(mass)))};
   }
 
   CauchyLobes<Real> fit_;
