@@ -7,7 +7,8 @@ passes), and the RMSE-against-time chart of bidirectional g = -0.9 (every study 
 --rmse-all). With --publish DIR, also copies them into DIR and writes DIR/results.md (date,
 machine, command, table, what each study resolved) and the README's table; for a VRL-only
 study (vrl_compare --vrl-only), DIR/vrl_only.md, DIR/thesis_claims.md (thesis.py) and the
-README's sentence on the thesis's claims instead.
+README's sentence on the thesis's claims instead. With --readme-from docs/compare/results.md
+(from the repository root), only the README's table again, from the published page.
 
 Decompose mode (--decompose): per scene, a stacked bar chart of the shares of per-pass
 variance and of time per part of transport, and of the medium-to-medium gather's variance
@@ -19,9 +20,11 @@ import datetime
 import json
 import os
 import platform
+import re
 import shutil
 import subprocess
 import sys
+import textwrap
 
 import matplotlib
 
@@ -192,44 +195,136 @@ def publish_study(out, names, results, folder, command, vrl_only):
     update_readme(provenance(command), sentence + "\n", marker="thesis-claims")
 
 
-def verdict_table(table):
-    """The README's one table, from the study's summary table: a row per scene, a column per
-    g, each cell the sampler called best (bold), or every sampler in the tie, with its
-    efficiency over Novak's and its 95% interval."""
-    rows = [[c.strip() for c in line.strip().strip("|").split("|")] for line in table.splitlines()
-            if line.startswith("|") and not line.startswith("|---")]
+# The scenes' media in a few words (docs/scenes.md), for the README's table.
+SCENE_MEDIA = {
+    "bidirectional": "thin, double scattering",
+    "room": "thin, beams",
+    "cube": "bounded box, caustics",
+    "corner": "dense, short segments",
+    "cloud": "dense, multiple scattering",
+    "fog": "thick, multiple scattering",
+}
+
+
+def table_rows(table):
+    """The rows of the first markdown table in `table` (a list of cell lists, the header
+    first); lines after it are ignored."""
+    rows, started = [], False
+    for line in table.splitlines():
+        if line.startswith("|"):
+            started = True
+            if not line.startswith("|---"):
+                rows.append([c.strip() for c in line.strip().strip("|").split("|")])
+        elif started:
+            break
+    return rows
+
+
+def verdict_table(table, results_link="docs/compare/results.md"):
+    """The README's "which sampler when", from the study's summary table: a row per scene
+    (with its medium in a few words), a column per g, each cell the sampler called best
+    (bold), or the samplers in the tie, most efficient first (at most 3, then "…"); no
+    intervals: those are in results_link."""
+    rows = table_rows(table)
     head, rows = rows[0], rows[1:]
     col = {name: i for i, name in enumerate(head)}
     efficiency = next(name for name in head if name.startswith("efficiency"))
+
+    def ratio(cell):
+        try:
+            return float(cell.split()[0])
+        except (IndexError, ValueError):
+            return 0.0
+
     scenes, gs, cells = [], [], {}
     for r in rows:
         scene, g = r[col["scene"]], r[col["g"]]
         scenes += [scene] if scene not in scenes else []
         gs += [g] if g not in gs else []
         if r[col["verdict"]] in ("best", "tie"):
-            name = f"**{r[col['sampler']]}**" if r[col["verdict"]] == "best" else r[col["sampler"]]
-            cells.setdefault((scene, g), []).append(f"{name} {r[col[efficiency]]}")
-    lines = [f"| scene | " + " | ".join(f"g = {g}" for g in gs) + " |", "|---|" + "---|" * len(gs)]
+            cells.setdefault((scene, g), []).append((r[col["verdict"]], r[col["sampler"]], ratio(r[col[efficiency]])))
+
+    def cell(found):
+        if not found:
+            return "none"
+        if len(found) == 1 and found[0][0] == "best":
+            return f"**{found[0][1]}**"
+        names = [name for _, name, _ in sorted(found, key=lambda f: -f[2])]
+        return ", ".join(names[:3]) + (", …" if len(names) > 3 else "")
+
+    lines = ["| scene (medium) | " + " | ".join(f"g = {g}" for g in gs) + " |", "|---|" + "---|" * len(gs)]
     for scene in scenes:
-        lines.append(f"| {scene} | " + " | ".join("; ".join(cells.get((scene, g), ["none"])) for g in gs) + " |")
-    return "\n".join(lines) + f"\n\nEach cell: {efficiency}; **bold**: best, otherwise the samplers in the tie.\n"
+        name = f"{scene} ({SCENE_MEDIA[scene]})" if scene in SCENE_MEDIA else scene
+        lines.append(f"| {name} | " + " | ".join(cell(cells.get((scene, g))) for g in gs) + " |")
+    return "\n".join(lines) + (
+        "\n\n**Bold**: best at equal time, else the tie, best first; "
+        f"full table with intervals: [results]({results_link}).\n")
+
+
+def wrap_prose(text, width=120):
+    """Lines of prose longer than `width` wrapped at spaces outside code spans (tables and
+    code left alone), so the README keeps its line length whatever a generator writes."""
+    out, code = [], False
+    for line in text.split("\n"):
+        if line.startswith("```"):
+            code = not code
+        if code or line.startswith(("|", "```", "    ")) or len(line) <= width:
+            out.append(line)
+        else:
+            glued = re.sub(r"`[^`]*`", lambda m: m.group(0).replace(" ", "\0"), line)
+            out += [w.replace("\0", " ") for w in
+                    textwrap.wrap(glued, width, break_long_words=False, break_on_hyphens=False)]
+    return "\n".join(out)
+
+
+# Where generated blocks the README does not hold live: the results page it links.
+RESULTS_PAGE = os.path.join("docs", "results.md")
+
+
+def rebase_links(text, source, target):
+    """Relative markdown links written for a page in folder `source` rewritten for one in `target`."""
+    if os.path.normpath(source or ".") == os.path.normpath(target or "."):
+        return text
+
+    def rebase(m):
+        label, path, rest = m.group(1), m.group(2), m.group(3) or ""
+        if not path or re.match(r"[a-z]+:", path) or path.startswith("/"):
+            return m.group(0)
+        new = os.path.relpath(os.path.join(source or ".", path), target or ".").replace(os.sep, "/")
+        return f"[{new if label == path else label}]({new}{rest})"
+
+    return re.sub(r"\[([^\]]*)\]\(([^)\s#]*)(#[^)\s]*)?\)", rebase, text)
 
 
 def update_readme(provenance_line, text_block, marker="compare-summary", readme="README.md"):
-    """Replaces the block between the project README's markers with what was just measured
-    (the verdicts, or the sentence on the thesis's claims), so that the README never quotes a
-    figure no command made; docs/compare/ keeps the whole tables."""
+    """Replaces the block between the markers with what was just measured (the verdicts, or
+    the sentence on the thesis's claims or on the effort control), so that no page quotes a
+    figure no command made; docs/compare/ keeps the whole tables. The block is the README's,
+    or, where the README does not hold the markers, the results page's (RESULTS_PAGE beside
+    the README; links written for the README are rebased). Long prose lines are wrapped."""
     begin, end = f"<!-- {marker} -->", f"<!-- /{marker} -->"
-    if not os.path.exists(readme):
+    folder = os.path.dirname(readme)
+    for page in (readme, os.path.join(folder, RESULTS_PAGE)):
+        if not os.path.exists(page):
+            continue
+        with open(page) as f:
+            text = f.read()
+        if begin not in text or end not in text:
+            continue
+        block = rebase_links(f"{begin}\n{provenance_line}\n\n{text_block}{end}", folder, os.path.dirname(page))
+        text = text[: text.index(begin)] + wrap_prose(block) + text[text.index(end) + len(end):]
+        with open(page, "w") as f:
+            f.write(text)
         return
-    with open(readme) as f:
+
+
+def readme_from(results_page):
+    """The README's table again from a published results.md (its provenance line and its
+    summary table), without rerunning the study."""
+    with open(results_page) as f:
         text = f.read()
-    if begin not in text or end not in text:
-        return
-    block = f"{begin}\n{provenance_line}\n\n{text_block}{end}"
-    text = text[: text.index(begin)] + block + text[text.index(end) + len(end):]
-    with open(readme, "w") as f:
-        f.write(text)
+    provenance_line = next(line for line in text.splitlines() if line.startswith("Generated "))
+    update_readme(provenance_line, verdict_table(text, os.path.relpath(results_page).replace(os.sep, "/")))
 
 
 def study_main(args):
@@ -418,13 +513,21 @@ def decompose_main(args):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("out", help="vrl_compare's output folder")
+    parser.add_argument("out", nargs="?", help="vrl_compare's output folder")
     parser.add_argument("--decompose", action="store_true", help="the noise decomposition (vrl_compare --decompose)")
     parser.add_argument("--publish", help="folder to copy the charts and pages into (docs/compare)")
     parser.add_argument("--command", default="tools/main.sh", help="the command that produced the output")
     parser.add_argument("--rmse-all", action="store_true",
                         help="an RMSE-against-time chart for every study (default: bidirectional at g = -0.9)")
+    parser.add_argument("--readme-from", metavar="RESULTS_MD",
+                        help="only rewrite the README's table from a published results.md (docs/compare/results.md); "
+                             "run from the repository root")
     args = parser.parse_args()
+    if args.readme_from:
+        readme_from(args.readme_from)
+        return 0
+    if not args.out:
+        parser.error("the output folder is required")
     (decompose_main if args.decompose else study_main)(args)
     return 0
 
