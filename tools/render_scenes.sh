@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the comparison scenes into docs/scenes/ (PNG previews and JSON summaries
 # committed; EXRs kept out of git) and measures VRL gathers per second with 1 and 2
-# threads, and writes the README's gallery (docs/scenes/gallery.png).
+# threads, and writes the gallery of docs/results.md (docs/scenes/gallery.png).
 # Usage: tools/render_scenes.sh [seconds per scene, default 60; bidirectional x4, room x12, corner x9,
 # cloud x2, fog x8] [size, default 192]
 set -euo pipefail
@@ -41,7 +41,7 @@ print("| --- | --- | --- | --- | --- | --- |")
 for s in ["bidirectional", "room", "cube", "corner", "corner-m2m", "corner-m2s", "cloud", "fog"]:
     d = json.load(open(f"{out}/{s}.json"))
     print(f"| {s} | {d['passes']} | {d['vrl_count']} | {d['gathers']} | {d['wall_time_s']:.1f} | {d['gathers_per_second']:.3g} |")
-# The README's gallery: the six scenes side by side.
+# The gallery of docs/results.md: the six scenes side by side.
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.image as mpimg
