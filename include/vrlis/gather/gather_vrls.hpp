@@ -31,8 +31,8 @@
 namespace vrlis {
 namespace detail {
 
-// T where a parameter must not take part in deducing it (so that a null pointer of weights
-// passes: Real comes from the segments).
+// T where a parameter must not take part in deducing it (so that an EffortCall given as
+// braces passes: Real comes from the segments).
 template <typename T>
 struct NonDeduced {
   using type = T;
