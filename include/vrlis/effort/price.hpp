@@ -68,6 +68,9 @@ class EffortPrice {
   // pass's neighbouring pixels, the next from the passes over time.
   static constexpr int kMinPasses = 1;
   static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
+  // The taken calls, or remainder paths, below which a tile's cost per call (per path) is too
+  // noisy, and the image's is taken instead.
+  static constexpr double kFewInTile = 16;
   // Shares of pixels: exploring the rule where the image takes another model, piloting the
   // cheapest model and the mixture before a price, measuring the mixture under the rule.
   static constexpr double kExplore = 1.0 / 512, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
@@ -351,8 +354,7 @@ class EffortPrice {
   // paths while the tile has traced few (docs/maths.md#effort-remainder).
   double RemainderDemand(std::size_t t) const {
     const RemainderRecord& tile = remainder_tiles_[t];
-    constexpr double kFewPaths = 16;  // below which a tile's cost is too noisy
-    const RemainderRecord& counted = tile.paths >= kFewPaths ? tile : remainder_;
+    const RemainderRecord& counted = tile.paths >= kFewInTile ? tile : remainder_;
     const double cost = counted.paths > 0 ? counted.work / counted.paths : 0;
     if (!(value_of_time() > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
     return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
@@ -364,8 +366,7 @@ class EffortPrice {
     const EffortRecord& tile = tiles_[kind][t];
     const EffortRecord& all = gathers_[kind];
     auto decisions = [](const EffortRecord& s) { return (s.work - s.sample_work) / s.call_rate; };
-    constexpr double kFewCalls = 16;  // taken calls below which a tile's cost is too noisy
-    const double cost = tile.call_rate >= kFewCalls ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
+    const double cost = tile.call_rate >= kFewInTile ? decisions(tile) : all.call_rate > 0 ? decisions(all) : 0;
     if (!(value_of_time() > 0) || !(cost > 0) || !(tile.calls > 0)) return 1;
     return std::sqrt(tile.call_m2 / tile.calls / cost * value_of_time());
   }
