@@ -71,10 +71,14 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     vrlis::VrlSegment<float> segments[kChunk];
     float weights[kChunk];  // for decided gathers, and VrlMarginal's choice of fits
     for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]), weights[i] = (throughput * chunk[i].flux).Rms();
+    // One visitor for the call and its pair (a second would compile every sampler pair again);
+    // the pair's samples are measured, not summed.
+    bool summed = true;
     auto visit = [&](int i, const vrlis::GatherSample<float>& s, float effort_weight) {
       const Spectrum x = chunk[i].flux * (Connect(scene, s) * share(s) * effort_weight);
-      sum += x;
       const float y = (throughput * x).Rms();
+      if (!summed) return y;
+      sum += x;
       if (options.weight_log) options.weight_log->Record(effort_weight, s.weight, y);
       return y;
     };
@@ -82,11 +86,10 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     WorkScope uncounted(nullptr, false);  // the record counts the call's work
     gather_chunk(surface ? effort.Surface(weights) : effort.Medium(weights, options.marginal_scores), own, segments, n,
                  visit);
-    if (pair) {  // for the statistics alone: not summed, and its numbers not the path's
-      auto measure = [&](int i, const vrlis::GatherSample<float>& s, float) {
-        return (throughput * chunk[i].flux * (Connect(scene, s) * share(s))).Rms();
-      };
-      gather_chunk(effort.Pair(weights), same, segments, n, measure);
+    if (pair) {  // for the statistics alone, on the same numbers: its own are not the path's
+      summed = false;
+      gather_chunk(effort.Pair(weights), same, segments, n, visit);
+      summed = true;
     }
   }
   return sum;

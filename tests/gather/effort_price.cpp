@@ -7,7 +7,8 @@
 // - it learns and acts: a price after the first pass, and gathers rouletted and split;
 // - a render is a function of its seed: the same seed gives the same image bit for bit, and a
 //   learner fed the same passes hands out the same settings;
-// - a record with a visitor that returns nothing is rejected, not silently unlearned.
+// - a record with a visitor that returns nothing is rejected, not silently unlearned; so are a
+//   pixel outside the image and a pass with a value short.
 #include <catch2/catch.hpp>
 #include <vrlis/effort/price.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
@@ -28,7 +29,7 @@ struct Scene {
   vrlis::Medium<Real> medium = vrlis::Medium<Real>::FromScatteringExtinction(Real(0.3), Real(0.5), Real(0.8));
   std::vector<vrlis::VrlSegment<Real>> vrls;
   std::vector<Real> power;  // also each VRL's predicted contribution: the control's weights
-  vrlis::GatherSamplers samplers = *vrlis::ParseGatherSamplers("novak");
+  vrlis::FixedSamplers<vrlis::NovakEntry> samplers;  // one pair compiled
 
   Scene() {
     std::mt19937 rng(11);
@@ -126,7 +127,8 @@ TEST_CASE("EffortPrice: the same seed gives the same image, the same passes the 
   CHECK(a.last != c.last);
 }
 
-TEST_CASE("a gather call with a record and a visitor that returns nothing is rejected", "[gather][effort]") {
+TEST_CASE("EffortPrice: a silent visitor with a record, a pixel outside, a value short are rejected",
+          "[gather][effort]") {
   const Scene s;
   vrlis::EffortRecord record;
   vrlis::EffortCall<Real> call;
@@ -139,4 +141,11 @@ TEST_CASE("a gather call with a record and a visitor that returns nothing is rej
   call.record = nullptr;  // without a record the same visitor is the plain gather's
   CHECK_NOTHROW(vrlis::GatherMediumVrls(s.samplers, s.Camera(0, 0), s.medium, s.vrls.data(), int(s.vrls.size()),
                                         uniform, silent, call));
+  vrlis::EffortPrice price(kSide, kSide);
+  price.BeginPass(call.settings);
+  CHECK_THROWS_AS(price.Pixel(kSide, 0, uniform), std::out_of_range);
+  CHECK_THROWS_AS(price.Pixel(0, -1, uniform), std::out_of_range);
+  CHECK_NOTHROW(price.Pixel(kSide - 1, kSide - 1, uniform));
+  CHECK_THROWS_AS(price.EndPass(std::vector<double>(kSide * kSide - 1)), std::invalid_argument);
+  CHECK_NOTHROW(price.EndPass(std::vector<double>(kSide * kSide)));
 }

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -51,6 +52,15 @@ Setup MakeSetup() {
   return s;
 }
 
+// Every one-call gather of this file goes through this one instantiation: each distinct visitor
+// type would compile every sampler pair again (a minute of build apiece).
+void Gather(vrlis::GatherSamplers method, const Setup& s, const vrlis::EffortSettings& effort, const Real* weights,
+            int count, const std::function<Real()>& uniform,
+            const std::function<void(int, const vrlis::GatherSample<Real>&, Real)>& visit) {
+  vrlis::GatherMediumVrls(method, s.camera, s.medium, s.vrls.data(), count, uniform, visit,
+                          vrlis::EffortCall<Real>{effort, weights});
+}
+
 struct Moments {
   double mean = 0, se = 0;
 };
@@ -64,12 +74,10 @@ Moments Estimate(const Setup& s, const vrlis::EffortSettings& effort, int runs, 
   double sum = 0, sum_sq = 0;
   for (int r = 0; r < runs; ++r) {
     double x = 0;
-    vrlis::GatherMediumVrls(s.method, s.camera, s.medium, s.vrls.data(),
-                            int(s.vrls.size()), [&] { return u(rng); },
-                            [&](int i, const vrlis::GatherSample<Real>& g, Real w) {
-                              x += scale * double(s.weights[std::size_t(i)]) * g.weight * (sabotage ? 1 : w);
-                            },
-                            vrlis::EffortCall<Real>{effort, s.weights.data()});
+    Gather(s.method, s, effort, s.weights.data(), int(s.vrls.size()), [&] { return u(rng); },
+           [&](int i, const vrlis::GatherSample<Real>& g, Real w) {
+             x += scale * double(s.weights[std::size_t(i)]) * g.weight * (sabotage ? 1 : w);
+           });
     sum += x;
     sum_sq += x * x;
   }
@@ -190,14 +198,13 @@ TEST_CASE("effort weights are finite and at most 1 / floor at extreme prices and
                        std::numeric_limits<double>::quiet_NaN()}) {
     vrlis::EffortSettings e{true, price};
     for (int r = 0; r < 50; ++r)
-      vrlis::GatherMediumVrls(s.method, s.camera, s.medium, s.vrls.data(), int(s.vrls.size()),
-                              [&] { return u(rng); }, [&](int, const vrlis::GatherSample<Real>& g, Real w) {
-                                REQUIRE(std::isfinite(w));
-                                REQUIRE(w > 0);
-                                REQUIRE(w <= 1 / e.floor * (1 + 1e-6));
-                                REQUIRE(std::isfinite(g.weight));
-                              },
-                              vrlis::EffortCall<Real>{e, s.weights.data()});
+      Gather(s.method, s, e, s.weights.data(), int(s.vrls.size()),
+             [&] { return u(rng); }, [&](int, const vrlis::GatherSample<Real>& g, Real w) {
+               REQUIRE(std::isfinite(w));
+               REQUIRE(w > 0);
+               REQUIRE(w <= 1 / e.floor * (1 + 1e-6));
+               REQUIRE(std::isfinite(g.weight));
+             });
   }
 }
 
@@ -248,10 +255,9 @@ std::vector<std::pair<int, Real>> Samples(const Setup& s, vrlis::GatherSamplers 
   std::uniform_real_distribution<Real> u(0, 1);
   std::vector<std::pair<int, Real>> out;
   for (int call = 0; call < 200; ++call)
-    vrlis::GatherMediumVrls(method, s.camera, s.medium, s.vrls.data(), int(s.vrls.size()),
-                            [&] { return u(rng); },
-                            [&](int i, const vrlis::GatherSample<Real>& g, Real w) { out.push_back({i, g.weight * w}); },
-                            vrlis::EffortCall<Real>{effort, s.weights.data()});
+    Gather(method, s, effort, s.weights.data(), int(s.vrls.size()),
+           [&] { return u(rng); },
+           [&](int i, const vrlis::GatherSample<Real>& g, Real w) { out.push_back({i, g.weight * w}); });
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -357,11 +363,10 @@ TEST_CASE("auto's samples estimate equiangular sampling's and the mixture's seco
     std::mt19937 rng(9);
     std::uniform_real_distribution<Real> u(0, 1);
     for (int call = 0; call < 20000; ++call)
-      vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers(method), s.camera, s.medium, s.vrls.data(), int(s.vrls.size()), [&] { return u(rng); },
-                              [&](int i, const vrlis::GatherSample<Real>& g, Real) {
-                                m[std::size_t(i)].add(double(g.weight) * g.weight * (over ? g.*over : 1));
-                              },
-                              vrlis::EffortCall<Real>{measure, s.weights.data()});
+      Gather(*vrlis::ParseGatherSamplers(method), s, measure, s.weights.data(), int(s.vrls.size()), [&] { return u(rng); },
+             [&](int i, const vrlis::GatherSample<Real>& g, Real) {
+               m[std::size_t(i)].add(double(g.weight) * g.weight * (over ? g.*over : 1));
+             });
     return m;
   };
   const auto sabotaged = second_moments("auto", nullptr);
@@ -383,12 +388,11 @@ TEST_CASE("auto's samples estimate equiangular sampling's and the mixture's seco
   // Whether any of a method's samples carries each ratio: {over_equiangular, over_mixture}.
   auto carried = [&](const char* method, const vrlis::EffortSettings& e) {
     std::pair<bool, bool> any{false, false};
-    vrlis::GatherMediumVrls(*vrlis::ParseGatherSamplers(method), s.camera, s.medium, s.vrls.data(), int(s.vrls.size()), [] { return Real(0.5); },
-                            [&](int, const vrlis::GatherSample<Real>& g, Real) {
-                              any.first |= g.over_equiangular != 0;
-                              any.second |= g.over_mixture != 0;
-                            },
-                            vrlis::EffortCall<Real>{e, s.weights.data()});
+    Gather(*vrlis::ParseGatherSamplers(method), s, e, s.weights.data(), int(s.vrls.size()), [] { return Real(0.5); },
+           [&](int, const vrlis::GatherSample<Real>& g, Real) {
+             any.first |= g.over_equiangular != 0;
+             any.second |= g.over_mixture != 0;
+           });
     return any;
   };
   CHECK(carried("novak", measure) == std::pair{false, false});
@@ -470,20 +474,19 @@ TEST_CASE("VrlMarginal fits the gathers whose score reaches the threshold, the o
   std::uniform_real_distribution<Real> u(0, 1);
   int fitted = 0, pointed = 0, distinct = 0;
   for (int run = 0; run < 40; ++run)
-    vrlis::GatherMediumVrls(s.method, s.camera, s.medium, s.vrls.data(), n,
-                            [&] { return u(rng); },
-                            [&](int i, const vrlis::GatherSample<Real>& g, Real) {
-                              if (!(g.pdf_v > 0)) return;
-                              const vrlis::MediumGatherQuery<Real> q{s.camera, s.vrls[std::size_t(i)], s.medium};
-                              const double marginal = vrlis::VrlMarginal<Real>(q).pdf(g.v);
-                              const double point = vrlis::VrlPoint<Real>(q).pdf(g.v);
-                              const bool fit = score[std::size_t(i)] >= effort.marginal_threshold;
-                              INFO("VRL " << i << (fit ? " fitted" : " not fitted") << ", v " << g.v);
-                              REQUIRE(g.pdf_v == Approx(fit ? marginal : point).epsilon(2e-3));
-                              ++(fit ? fitted : pointed);
-                              distinct += std::abs(marginal / point - 1) > 0.05;  // the two can be told apart
-                            },
-                            vrlis::EffortCall<Real>{effort, s.weights.data()});
+    Gather(s.method, s, effort, s.weights.data(), n,
+           [&] { return u(rng); },
+           [&](int i, const vrlis::GatherSample<Real>& g, Real) {
+             if (!(g.pdf_v > 0)) return;
+             const vrlis::MediumGatherQuery<Real> q{s.camera, s.vrls[std::size_t(i)], s.medium};
+             const double marginal = vrlis::VrlMarginal<Real>(q).pdf(g.v);
+             const double point = vrlis::VrlPoint<Real>(q).pdf(g.v);
+             const bool fit = score[std::size_t(i)] >= effort.marginal_threshold;
+             INFO("VRL " << i << (fit ? " fitted" : " not fitted") << ", v " << g.v);
+             REQUIRE(g.pdf_v == Approx(fit ? marginal : point).epsilon(2e-3));
+             ++(fit ? fitted : pointed);
+             distinct += std::abs(marginal / point - 1) > 0.05;  // the two can be told apart
+           });
   CHECK(fitted > 100);
   CHECK(pointed > 100);
   CHECK(distinct > 100);
@@ -527,10 +530,9 @@ TEST_CASE("a null weights pointer gathers as weights of one", "[gather][effort]"
     std::uniform_real_distribution<Real> u(0, 1);
     std::vector<double> taken;
     for (int r = 0; r < 50; ++r)
-      vrlis::GatherMediumVrls(s.method, s.camera, s.medium, s.vrls.data(), int(s.vrls.size()),
-                              [&] { return u(rng); },
-                              [&](int i, const vrlis::GatherSample<Real>& g, Real w) { taken.push_back(i + g.weight * w); },
-                              vrlis::EffortCall<Real>{effort, weights});
+      Gather(s.method, s, effort, weights, int(s.vrls.size()),
+             [&] { return u(rng); },
+             [&](int i, const vrlis::GatherSample<Real>& g, Real w) { taken.push_back(i + g.weight * w); });
     return taken;
   };
   std::vector<Real> ones(s.vrls.size(), Real(1));

@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -111,9 +112,12 @@ class EffortPrice {
 
   // Pixel (x, y)'s effort in this pass, from six numbers uniform in [0, 1) that uniform()
   // draws in order (the two gathers' model, their decisions, their measuring of the
-  // mixture): the same numbers give the same settings. Each pixel on one thread at a time.
+  // mixture): the same numbers give the same settings. Each pixel on one thread at a time; a
+  // pixel outside the image throws std::out_of_range.
   template <typename Uniform>
   PixelEffort Pixel(int x, int y, Uniform&& uniform) {
+    if (x < 0 || y < 0 || x >= width_ || y >= height_)
+      throw std::out_of_range("vrlis::EffortPrice::Pixel: no such pixel");
     double u[6];
     for (double& v : u) v = double(uniform());
     PixelEffort p;
@@ -144,9 +148,11 @@ class EffortPrice {
   // both models' variances by one estimator (docs/maths.md#effort-accurate).
   bool Pairs(double u) const { return passes_ < kMinPasses && u < kPairShare; }
 
-  // One finished pass: each pixel's value (row-major, width x height) and the work the
-  // renderer counted outside its gather calls (the records count theirs).
+  // One finished pass: each pixel's value (row-major, width x height; another count throws
+  // std::invalid_argument) and the work the renderer counted outside its gather calls (the
+  // records count theirs).
   void EndPass(const std::vector<double>& values, double other_work = 0) {
+    if (values.size() != pixels_) throw std::invalid_argument("vrlis::EffortPrice::EndPass: one value per pixel");
     Passes& into = passes_of_[passes_ >= kMinPasses];
     std::vector<EffortRecord> pass_tiles[2][2];  // per kind, undecided or decided, per tile
     for (auto& kind : pass_tiles)
@@ -188,12 +194,12 @@ class EffortPrice {
       into.switchable[kind] += m[int(EffortModel::Chosen)] + m[int(EffortModel::Cheapest)] + m[int(EffortModel::Mixture)];
       into.cheapest[kind] += m[int(EffortModel::Cheapest)], into.mixture[kind] += m[int(EffortModel::Mixture)];
     }
-    for (std::size_t i = 0; i < pixels_ && i < values.size(); ++i) {
+    for (std::size_t i = 0; i < pixels_; ++i) {
       const double v = values[i];
       if (!std::isfinite(v)) continue;
       into.sum[i] += v, into.sum_sq[i] += v * v;
     }
-    if (pairs > 0 && width_ >= 2 && values.size() >= pixels_) MeasureAccurate(values);
+    if (pairs > 0 && width_ >= 2) MeasureAccurate(values);
     into.work += work;
     last_pass_work_ = work;
     ++into.count;
