@@ -17,7 +17,6 @@
 // validity; decided, the call may first draw one for whether it is taken (EffortCallRate),
 // and each VRL one for its number of samples (docs/porting.md#the-fast-path).
 #include <algorithm>
-#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -160,8 +159,10 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
     if (record) {
       const int m = static_cast<int>(model);
       record->model_samples[m] += batch.count;
-      if (!(model == EffortModel::Chosen && effort.measure_mixture)) record->model_work[m] += work;
-      if (model == EffortModel::Chosen && effort.measure_mixture) record->mixture_measured += batch.count;
+      // The rule's samples that also measured the mixture cost more than the rule alone.
+      const bool measured = model == EffortModel::Chosen && effort.measure_mixture;
+      if (measured) record->mixture_measured += batch.count;
+      else record->model_work[m] += work;
       const double sampled = work + batch.count * call.visit_work;
       record->sample_work += sampled, record->work += sampled;
     }

@@ -25,6 +25,15 @@ SinCosPair<Widened<Real>> WidenedSinCos(Real s) {
   SinCosPair<Real> e = SinCos(s);
   return {e.sin, e.cos};
 }
+// The same for a batch's lanes, in a loop of its own (libm's, one lane at a time), so that the
+// loops around it stay vectorised.
+template <typename Real>
+void WidenedSinCosLanes(const Real* s, int lanes, Widened<Real>* sin, Widened<Real>* cos) {
+  for (int i = 0; i < lanes; ++i) {
+    const SinCosPair<Widened<Real>> e = WidenedSinCos(s[i]);
+    sin[i] = e.sin, cos[i] = e.cos;
+  }
+}
 
 template <typename Real>
 class TruncatedCauchy {

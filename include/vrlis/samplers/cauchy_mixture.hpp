@@ -40,10 +40,7 @@ class CauchyMixtureAngle {
       s[i] = pick.rest * SelectLanes(pick.second, fits.mass[1][i], fits.mass[0][i]);
     }
     Widened<Real> sin[kSize], cos[kSize];
-    for (int i = 0; i < lanes; ++i) {
-      const SinCosPair<Widened<Real>> e = WidenedSinCos(s[i]);
-      sin[i] = e.sin, cos[i] = e.cos;
-    }
+    WidenedSinCosLanes(s, lanes, sin, cos);
     for (int i = 0; i < lanes; ++i) {
       const Real w = target.width[i];
       const TruncatedCauchy<Real> lobe[2] = {fits.lobe(0, i, w), fits.lobe(1, i, w)};

@@ -39,10 +39,7 @@ class CauchySumAngle {
       turn[i] = Turn<true>(Centre<true>(fits.lobe(0, i, w), fits.lobe(1, i, w), w), u[i] * mass, mass, w);
     }
     Widened<Real> sin[kSize], cos[kSize];
-    for (int i = 0; i < lanes; ++i) {
-      const SinCosPair<Widened<Real>> e = WidenedSinCos(turn[i]);
-      sin[i] = e.sin, cos[i] = e.cos;
-    }
+    WidenedSinCosLanes(turn, lanes, sin, cos);
     for (int i = 0; i < lanes; ++i) {
       const Real w = target.width[i];
       out[i] = SampleQuadratic<true>(fits.lobe(0, i, w), fits.lobe(1, i, w), w, fits.mass[0][i] + fits.mass[1][i],
