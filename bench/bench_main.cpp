@@ -16,6 +16,9 @@
 //   Work/...                   the effort control's counted operations (bench_work.cpp,
 //                              bench_renderer_work.cpp; tools/work_costs.sh)
 //
+// --vrlis_lanes=built runs the batched gathers as built rather than on the widest lanes the
+// processor has (core/dispatch.hpp: vrlis::UseWidestLanes).
+//
 // Every benchmark cycles in order through a pool of 1024 random configurations (those of
 // the accuracy study, seeded), so that no single warm branch is timed. Float throughout;
 // samplers are chosen through the library's registry (SegmentSamplers::With: one predictable
@@ -24,6 +27,8 @@
 #include <map>
 #include <memory>
 #include <string>
+
+#include <vrlis/core/dispatch.hpp>
 
 #include "bench_common.hpp"
 
@@ -48,21 +53,28 @@ const Pools& PoolsFor(double g) {
 
 int main(int argc, char** argv) {
   using namespace vrlis::bench;
-  // Our one flag, taken out before Google Benchmark reads the rest.
-  std::string queries;
-  const std::string flag = "--vrlis_queries=";
+  // Our flags, taken out before Google Benchmark reads the rest.
+  std::string queries, lanes = "widest";
+  const std::string queries_flag = "--vrlis_queries=", lanes_flag = "--vrlis_lanes=";
   int kept = 1;
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
-    if (arg.rfind(flag, 0) == 0) queries = arg.substr(flag.size());
+    if (arg.rfind(queries_flag, 0) == 0) queries = arg.substr(queries_flag.size());
+    else if (arg.rfind(lanes_flag, 0) == 0) lanes = arg.substr(lanes_flag.size());
     else argv[kept++] = argv[i];
   }
+  if (lanes != "widest" && lanes != "built") {
+    std::fprintf(stderr, "vrlis_bench: --vrlis_lanes must be widest or built, not %s\n", lanes.c_str());
+    return 2;
+  }
+  vrlis::UseWidestLanes(lanes == "widest");
   argc = kept;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::AddCustomContext("vrlis_pool", std::to_string(kPool));
   benchmark::AddCustomContext("vrlis_seed", std::to_string(kDefaultSeed));
   benchmark::AddCustomContext("vrlis_real", "float");
+  benchmark::AddCustomContext("vrlis_lanes", vrlis::detail::Avx2LanesInUse() ? "avx2" : "built");
 #if defined(__OPTIMIZE__) && defined(NDEBUG)
   benchmark::AddCustomContext("vrlis_build", "optimised, NDEBUG");
 #else

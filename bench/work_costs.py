@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """The effort control's work constants from vrlis_bench's JSON (tools/work_costs.sh).
 
-Writes include/vrlis/effort/work_costs.hpp (the library's operations) and
+Writes include/vrlis/effort/work_costs.hpp (the library's operations, on each path of the
+batched gathers' lanes, core/dispatch.hpp) and
 integration/include/vrlis_integration/renderer_work.hpp (the example renderer's rays, its
 calls' and its pixels' own work); a unit is a nanosecond of the machine measured
 (docs/maths.md#effort-work).
 
-  work_costs.py BENCH.json [--write]   prints the constants; --write also writes both headers
+  work_costs.py AVX2.json BUILT.json [--write]
+      AVX2.json: vrlis_bench on the widest lanes (the default); BUILT.json: the library's
+      benchmarks with --vrlis_lanes=built. Prints the constants; --write also writes both headers.
 """
 import json
 import math
@@ -41,7 +44,8 @@ def geomean(values):
     return math.exp(sum(math.log(v) for v in values) / len(values))
 
 
-def constants(ns):
+def library(ns):
+    """The library's operations on the lanes ns was measured on."""
     samplers = sorted({k.split("/")[1] for k in ns if k.startswith("GatherBatch/") and "+" not in k.split("/")[1]})
     table, marginal, loop, decision = [], [], [], []
     for name in samplers:
@@ -52,6 +56,21 @@ def constants(ns):
         loop.append(ns[f"Work/call/{name}"] - ns[f"GatherBatch/{name}/g:0.50"])
         decision.append(ns[f"Work/call-decided/{name}"] - ns[f"Work/call/{name}"] - ns["Work/bound/medium-quick"]
                         - ns["Work/bound/medium-tight"])
+    return {
+        "samplers": table,
+        "marginal_fit": max(0.0, statistics.mean(marginal)),
+        "mixture_density": max(0.0, ns["Work/mixture-density/measured"] - ns["Work/mixture-density/plain"]),
+        "medium_quick_bound": ns["Work/bound/medium-quick"],
+        "medium_tight_bound": ns["Work/bound/medium-tight"],
+        "surface_quick_bound": ns["Work/bound/surface-quick"],
+        "surface_tight_bound": ns["Work/bound/surface-tight"],
+        "vrl": max(0.0, statistics.mean(loop)),
+        "decision": max(0.0, statistics.mean(decision)),
+    }
+
+
+def renderer(ns):
+    """The example renderer's own operations (measured on the widest lanes)."""
     rays = {kind: geomean([v for k, v in ns.items() if k.startswith(f"Work/ray/{kind}/")])
             for kind in ("intersect", "occluded")}
     scenes = [k.split("/")[-1] for k in ns if k.startswith("Work/renderer/call/") and "#" not in k]
@@ -60,15 +79,6 @@ def constants(ns):
     pixel = statistics.mean(max(0.0, ns[f"Work/renderer/pixel/{s}"] - ns[f"Work/renderer/pixel/{s}#counted"]
                                 - call * ns[f"Work/renderer/pixel/{s}#vrls"]) for s in scenes)
     return {
-        "samplers": table,
-        "kMarginalFit": max(0.0, statistics.mean(marginal)),
-        "kMixtureDensity": max(0.0, ns["Work/mixture-density/measured"] - ns["Work/mixture-density/plain"]),
-        "kMediumQuickBound": ns["Work/bound/medium-quick"],
-        "kMediumTightBound": ns["Work/bound/medium-tight"],
-        "kSurfaceQuickBound": ns["Work/bound/surface-quick"],
-        "kSurfaceTightBound": ns["Work/bound/surface-tight"],
-        "kVrl": max(0.0, statistics.mean(loop)),
-        "kDecision": max(0.0, statistics.mean(decision)),
         "kIntersect": rays["intersect"],
         "kOccluded": rays["occluded"],
         "kConnect": call,
@@ -83,8 +93,21 @@ def provenance(context):
             "// regenerate, do not edit (docs/maths.md#effort-work).\n")
 
 
-def write(c, context):
-    rows = "\n".join(f'    {{"{n}", {m:.1f}, {s:.1f}}},' for n, m, s in c["samplers"])
+FIELDS = ("marginal_fit", "mixture_density", "medium_quick_bound", "medium_tight_bound", "surface_quick_bound",
+          "surface_tight_bound", "vrl", "decision")
+
+
+def lanes_initialiser(c):
+    rows = "\n".join(f'        {{"{n}", {m:.1f}, {s:.1f}}},' for n, m, s in c["samplers"])
+    values = ", ".join(f"{c[f]:.2f}" for f in FIELDS)
+    return f"{{\n    {{\n{rows}\n    }},\n    {values}}}"
+
+
+def write(lanes, r, context):
+    avx2, built = lanes
+    names = [n for n, _, _ in avx2["samplers"]]
+    if names != [n for n, _, _ in built["samplers"]]:
+        sys.exit("work_costs.py: the two runs timed different samplers")
     lib = f"""#pragma once
 {provenance(context)}#include <string_view>
 
@@ -96,27 +119,31 @@ struct SamplerWork {{
   std::string_view name;
   double medium, surface;
 }};
-inline constexpr SamplerWork kSamplers[] = {{
-{rows}
+inline constexpr int kSamplerCount = {len(names)};
+
+// The library's operations on one path of the batched gathers' lanes (core/dispatch.hpp).
+struct LaneWork {{
+  SamplerWork samplers[kSamplerCount];
+  double marginal_fit;     // VrlMarginal over VrlPoint, per medium sample
+  double mixture_density;  // a sample's density over the mixture
+  // Per VRL, in lanes of eight (Work/bound/).
+  double medium_quick_bound, medium_tight_bound, surface_quick_bound, surface_tight_bound;
+  double vrl;       // a call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/)
+  double decision;  // a decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/, bounds)
 }};
-inline constexpr double kMarginalFit = {c['kMarginalFit']:.1f};  // VrlMarginal over VrlPoint, per medium sample
-inline constexpr double kMixtureDensity = {c['kMixtureDensity']:.1f};  // a sample's density over the mixture
-// Per VRL, in lanes of eight (Work/bound/).
-inline constexpr double kMediumQuickBound = {c['kMediumQuickBound']:.2f};
-inline constexpr double kMediumTightBound = {c['kMediumTightBound']:.2f};
-inline constexpr double kSurfaceQuickBound = {c['kSurfaceQuickBound']:.2f};
-inline constexpr double kSurfaceTightBound = {c['kSurfaceTightBound']:.2f};
-// A call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/, mean over samplers).
-inline constexpr double kVrl = {c['kVrl']:.2f};
-// A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
-inline constexpr double kDecision = {c['kDecision']:.2f};
+
+// On AVX2 lanes (8 floats): dispatched to, or built for.
+inline constexpr LaneWork kAvx2 = {lanes_initialiser(avx2)};
+// As built without AVX2 (x86-64's default: SSE2, 4 floats; --vrlis_lanes=built).
+inline constexpr LaneWork kBuilt = {lanes_initialiser(built)};
+
 // A visit of the example renderer, the default of a renderer that counts none of its own: an
 // occlusion ray and the connection around it (Work/ray/occluded/ and Work/renderer/call/).
-inline constexpr double kVisit = {c['kOccluded'] + c['kConnect']:.1f};
+inline constexpr double kVisit = {r['kOccluded'] + r['kConnect']:.1f};
 
 }}  // namespace vrlis::work_costs
 """
-    renderer = f"""#pragma once
+    renderer_header = f"""#pragma once
 {provenance(context)}namespace vrlis::integration::renderer_work {{
 
 // Work units (vrlis/effort/work.hpp) of what the example renderer owns: one ray of the example
@@ -124,32 +151,36 @@ inline constexpr double kVisit = {c['kOccluded'] + c['kConnect']:.1f};
 // connection beyond the library's work and its ray (Work/renderer/call/, every gather taken
 // once: its time less what is counted, mean over the scenes); a pixel's beyond its calls and
 // rays (Work/renderer/pixel/).
-inline constexpr double kIntersect = {c['kIntersect']:.1f};
-inline constexpr double kOccluded = {c['kOccluded']:.1f};
-inline constexpr double kConnect = {c['kConnect']:.1f};
-inline constexpr double kPixel = {c['kPixel']:.1f};
+inline constexpr double kIntersect = {r['kIntersect']:.1f};
+inline constexpr double kOccluded = {r['kOccluded']:.1f};
+inline constexpr double kConnect = {r['kConnect']:.1f};
+inline constexpr double kPixel = {r['kPixel']:.1f};
 
 }}  // namespace vrlis::integration::renderer_work
 """
     (ROOT / "include/vrlis/effort/work_costs.hpp").write_text(lib)
-    (ROOT / "integration/include/vrlis_integration/renderer_work.hpp").write_text(renderer)
+    (ROOT / "integration/include/vrlis_integration/renderer_work.hpp").write_text(renderer_header)
 
 
 def main():
-    if len(sys.argv) < 2:
+    if len(sys.argv) < 3:
         sys.exit(__doc__)
-    ns, context = per_item(sys.argv[1])
+    (ns, context), (built_ns, _) = per_item(sys.argv[1]), per_item(sys.argv[2])
     try:
-        c = constants(ns)
+        lanes = library(ns), library(built_ns)
+        r = renderer(ns)
     except KeyError as e:
-        sys.exit(f"work_costs.py: benchmark {e} missing from {sys.argv[1]}")
-    for name, medium, surface in c["samplers"]:
-        print(f"{name:16s} medium {medium:7.1f}  surface {surface:7.1f}")
-    for k, v in c.items():
-        if k != "samplers":
-            print(f"{k:20s} {v:8.2f}")
-    if "--write" in sys.argv[2:]:
-        write(c, context)
+        sys.exit(f"work_costs.py: benchmark {e} missing")
+    for title, c in zip(("AVX2 lanes", "built lanes"), lanes):
+        print(title)
+        for name, medium, surface in c["samplers"]:
+            print(f"  {name:16s} medium {medium:7.1f}  surface {surface:7.1f}")
+        for k in FIELDS:
+            print(f"  {k:20s} {c[k]:8.2f}")
+    for k, v in r.items():
+        print(f"{k:22s} {v:8.2f}")
+    if "--write" in sys.argv[3:]:
+        write(lanes, r, context)
         print("wrote include/vrlis/effort/work_costs.hpp, integration/include/vrlis_integration/renderer_work.hpp")
 
 

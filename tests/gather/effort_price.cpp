@@ -8,7 +8,9 @@
 // - a render is a function of its seed: the same seed gives the same image bit for bit, and a
 //   learner fed the same passes hands out the same settings;
 // - a record with a visitor that returns nothing is rejected, not silently unlearned; so are a
-//   pixel outside the image and a pass with a value short.
+//   pixel outside the image and a pass with a value short;
+// - a call counts its operations at the constants of the lanes in use (core/dispatch.hpp), and
+//   a visit only for a sample that contributes.
 #include <catch2/catch.hpp>
 #include <vrlis/effort/price.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
@@ -148,4 +150,38 @@ TEST_CASE("EffortPrice: a silent visitor with a record, a pixel outside, a value
   CHECK_NOTHROW(price.Pixel(kSide - 1, kSide - 1, uniform));
   CHECK_THROWS_AS(price.EndPass(std::vector<double>(kSide * kSide - 1)), std::invalid_argument);
   CHECK_NOTHROW(price.EndPass(std::vector<double>(kSide * kSide)));
+}
+
+TEST_CASE("Counted work: a call's is its operations' on the lanes in use, visits of contributing samples alone",
+          "[gather][effort]") {
+  const Scene s;
+  // A surface point facing +z, and VRLs above it and below its plane: those below give
+  // samples of zero weight, which need no occlusion ray.
+  const vrlis::Vec3<Real> point{0, 0, 0}, normal{0, 0, 1};
+  std::vector<vrlis::VrlSegment<Real>> vrls;
+  for (int i = 0; i < 8; ++i)
+    vrls.push_back({{Real(i - 4), Real(1), Real(i % 2 ? 1.5 : -1.5)}, vrlis::Normalize(vrlis::Vec3<Real>{1, 1, 0}), 2});
+  const int n = int(vrls.size());
+  for (const bool widest : {true, false}) {
+    vrlis::UseWidestLanes(widest);
+    INFO("widest lanes allowed " << widest << ", AVX2 in use " << vrlis::detail::Avx2LanesInUse());
+    const vrlis::CountedWork& costs = vrlis::LanesWork();
+    CHECK(&costs == (vrlis::detail::Avx2LanesInUse() ? &vrlis::detail::kAvx2Work : &vrlis::detail::kBuiltWork));
+    vrlis::EffortRecord record;
+    vrlis::EffortCall<Real> call;  // the control off: one sample per VRL, no bounds, no decisions
+    call.record = &record, call.visit_work = 1000;
+    int visits = 0;
+    vrlis::GatherSurfaceVrls(
+        s.samplers, point, normal, s.medium, vrls.data(), n, [] { return Real(0.5); },
+        [&](int, const vrlis::GatherSample<Real>& g, Real) {
+          visits += g.contributes();
+          return double(g.weight);
+        },
+        call);
+    REQUIRE(visits == n / 2);
+    const double expected = costs.operations.vrl * (1 + n) +
+                            n * costs.SurfaceSample(vrlis::SegmentSamplers::Of<vrlis::NovakEntry>()) + 1000.0 * visits;
+    CHECK(record.work == Approx(expected).epsilon(1e-12));
+  }
+  vrlis::UseWidestLanes(true);
 }

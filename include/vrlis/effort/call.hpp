@@ -20,8 +20,9 @@ struct EffortCall {
   EffortRecord* record = nullptr;
   // If set, with VrlMarginal as step one, the gathers' MarginalFitScores.
   ScoreOctaves* scores = nullptr;
-  // The counted work of one visit, the renderer's (its occlusion ray and connection): the
-  // default is the example renderer's on its scenes (work_costs.hpp).
+  // The counted work of one visit of a sample of positive weight, the renderer's (its
+  // occlusion ray and connection; a sample of zero weight contributes nothing and is counted
+  // as needing no ray): the default is the example renderer's on its scenes (work_costs.hpp).
   double visit_work = work_costs::kVisit;
 };
 

@@ -8,44 +8,53 @@
 #include <array>
 #include <string_view>
 
+#include "../core/dispatch.hpp"
 #include "../method.hpp"
 #include "work_costs.hpp"
 
 namespace vrlis {
 namespace detail {
-// The entry of work_costs::kSamplers named `name`, or the costliest where none is (a sampler
+// The entry of lanes.samplers named `name`, or the costliest where none is (a sampler
 // registered after the constants were measured is priced high rather than free).
-constexpr work_costs::SamplerWork SamplerWorkOf(std::string_view name) {
-  work_costs::SamplerWork costliest = work_costs::kSamplers[0];
-  for (const work_costs::SamplerWork& w : work_costs::kSamplers) {
+constexpr work_costs::SamplerWork SamplerWorkOf(const work_costs::LaneWork& lanes, std::string_view name) {
+  work_costs::SamplerWork costliest = lanes.samplers[0];
+  for (const work_costs::SamplerWork& w : lanes.samplers) {
     if (w.name == name) return w;
     if (w.medium > costliest.medium) costliest = w;
   }
   return {name, costliest.medium, costliest.surface};
 }
-template <bool kSurface>
-constexpr std::array<double, SegmentSamplers::kCount> SampleWorkTable() {
-  std::array<double, SegmentSamplers::kCount> table{};
-  for (std::size_t i = 0; i < SegmentSamplers::kCount; ++i) {
-    const work_costs::SamplerWork w = SamplerWorkOf(SegmentSamplers::kNames[i]);
-    table[i] = kSurface ? w.surface : w.medium;
-  }
-  return table;
-}
-// Built at compile time: a gather's batch looks its sampler up by index, not by name.
-inline constexpr auto kMediumSampleWork = SampleWorkTable<false>();
-inline constexpr auto kSurfaceSampleWork = SampleWorkTable<true>();
 }  // namespace detail
 
-// One sample of the batched medium-to-medium gather with this camera sampler after VrlPoint;
-// VrlMarginal's fit, where a sample takes it, costs MarginalFitWork more.
-constexpr double MediumSampleWork(SegmentChoice camera) {
-  return detail::kMediumSampleWork[static_cast<std::size_t>(camera.index())];
-}
-constexpr double MarginalFitWork() { return work_costs::kMarginalFit; }
-// One sample of the batched medium-to-surface gather with this sampler.
-constexpr double SurfaceSampleWork(SegmentChoice sampler) {
-  return detail::kSurfaceSampleWork[static_cast<std::size_t>(sampler.index())];
-}
+// The counted work of one path of the batched gathers' lanes, its samplers' looked up by
+// index (built at compile time: a gather's batch looks its sampler up by index, not by name).
+struct CountedWork {
+  work_costs::LaneWork operations;
+  std::array<double, SegmentSamplers::kCount> medium_sample{}, surface_sample{};
+
+  constexpr explicit CountedWork(const work_costs::LaneWork& lanes) : operations(lanes) {
+    for (std::size_t i = 0; i < SegmentSamplers::kCount; ++i) {
+      const work_costs::SamplerWork w = detail::SamplerWorkOf(lanes, SegmentSamplers::kNames[i]);
+      medium_sample[i] = w.medium, surface_sample[i] = w.surface;
+    }
+  }
+  // One sample of the batched medium-to-medium gather with this camera sampler after
+  // VrlPoint; VrlMarginal's fit, where a sample takes it, costs operations.marginal_fit more.
+  constexpr double MediumSample(SegmentChoice camera) const {
+    return medium_sample[static_cast<std::size_t>(camera.index())];
+  }
+  // One sample of the batched medium-to-surface gather with this sampler.
+  constexpr double SurfaceSample(SegmentChoice sampler) const {
+    return surface_sample[static_cast<std::size_t>(sampler.index())];
+  }
+};
+
+namespace detail {
+inline constexpr CountedWork kAvx2Work{work_costs::kAvx2}, kBuiltWork{work_costs::kBuilt};
+}  // namespace detail
+
+// The counted work of the lanes this process's batched gathers take (core/dispatch.hpp): a
+// render with the effort control is a function of its scene, settings, seed and that path.
+inline const CountedWork& LanesWork() { return detail::Avx2LanesInUse() ? detail::kAvx2Work : detail::kBuiltWork; }
 
 }  // namespace vrlis

@@ -11,25 +11,42 @@ struct SamplerWork {
   std::string_view name;
   double medium, surface;
 };
-inline constexpr SamplerWork kSamplers[] = {
-    {"auto", 242.5, 181.5},
-    {"cauchy-mixture", 73.6, 95.2},
-    {"cauchy-sum", 82.7, 99.1},
-    {"equiangular", 31.4, 41.2},
-    {"full-product", 78.5, 150.9},
-    {"novak", 68.1, 144.0},
+inline constexpr int kSamplerCount = 6;
+
+// The library's operations on one path of the batched gathers' lanes (core/dispatch.hpp).
+struct LaneWork {
+  SamplerWork samplers[kSamplerCount];
+  double marginal_fit;     // VrlMarginal over VrlPoint, per medium sample
+  double mixture_density;  // a sample's density over the mixture
+  // Per VRL, in lanes of eight (Work/bound/).
+  double medium_quick_bound, medium_tight_bound, surface_quick_bound, surface_tight_bound;
+  double vrl;       // a call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/)
+  double decision;  // a decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/, bounds)
 };
-inline constexpr double kMarginalFit = 299.4;  // VrlMarginal over VrlPoint, per medium sample
-inline constexpr double kMixtureDensity = 52.3;  // a sample's density over the mixture
-// Per VRL, in lanes of eight (Work/bound/).
-inline constexpr double kMediumQuickBound = 4.19;
-inline constexpr double kMediumTightBound = 17.93;
-inline constexpr double kSurfaceQuickBound = 3.65;
-inline constexpr double kSurfaceTightBound = 7.00;
-// A call's loop per VRL beyond its batched sample (Work/call/ less GatherBatch/, mean over samplers).
-inline constexpr double kVrl = 11.29;
-// A decided gather's decision beyond its bounds (Work/call-decided/ less Work/call/ and both bounds).
-inline constexpr double kDecision = 34.19;
+
+// On AVX2 lanes (8 floats): dispatched to, or built for.
+inline constexpr LaneWork kAvx2 = {
+    {
+        {"auto", 242.5, 181.5},
+        {"cauchy-mixture", 73.6, 95.2},
+        {"cauchy-sum", 82.7, 99.1},
+        {"equiangular", 31.4, 41.2},
+        {"full-product", 78.5, 150.9},
+        {"novak", 68.1, 144.0},
+    },
+    299.39, 52.30, 4.19, 17.93, 3.65, 7.00, 11.29, 34.19};
+// As built without AVX2 (x86-64's default: SSE2, 4 floats; --vrlis_lanes=built).
+inline constexpr LaneWork kBuilt = {
+    {
+        {"auto", 242.5, 181.5},
+        {"cauchy-mixture", 73.6, 95.2},
+        {"cauchy-sum", 82.7, 99.1},
+        {"equiangular", 31.4, 41.2},
+        {"full-product", 78.5, 150.9},
+        {"novak", 68.1, 144.0},
+    },
+    299.39, 52.30, 4.19, 17.93, 3.65, 7.00, 11.29, 34.19};
+
 // A visit of the example renderer, the default of a renderer that counts none of its own: an
 // occlusion ray and the connection around it (Work/ray/occluded/ and Work/renderer/call/).
 inline constexpr double kVisit = 66.8;

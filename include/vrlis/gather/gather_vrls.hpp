@@ -103,7 +103,8 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
     throw std::invalid_argument("vrlis: a gather call with a record needs a visitor that returns its contribution");
   const bool decide = effort.on && effort.decide;
   const double rate = EffortCallRate(effort);
-  double call_sum = 0, loop_work = work_costs::kVrl;  // a call not taken still draws its number
+  const CountedWork& costs = LanesWork();
+  double call_sum = 0, loop_work = costs.operations.vrl;  // a call not taken still draws its number
   constexpr int kStackVrls = 256;
   SplitSums stack_split[kReturns ? kStackVrls : 1];
   std::vector<SplitSums> heap_split;
@@ -148,7 +149,9 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
   auto run = [&](EffortModel model) {
     Batch& batch = *batches[static_cast<int>(model)];
     const double work = gather(model, batch, samples);
+    int visits = 0;  // a sample that does not contribute needs no ray: its visit is not counted
     for (int k = 0; k < batch.count; ++k) {
+      visits += samples[k].contributes();
       if constexpr (kReturns) {
         const double y = double(visit(batch.source[k], samples[k], batch.effort_weight[k]));
         if (record) learn(batch.source[k], samples[k], double(batch.effort_weight[k]), y);
@@ -163,7 +166,7 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
       const bool measured = model == EffortModel::Chosen && effort.measure_mixture;
       if (measured) record->mixture_measured += batch.count;
       else record->model_work[m] += work;
-      const double sampled = work + batch.count * call.visit_work;
+      const double sampled = work + visits * call.visit_work;
       record->sample_work += sampled, record->work += sampled;
     }
     batch.count = 0;
@@ -172,13 +175,13 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
   bool tight_taken = false;  // for the block of VRL i
   EffortModel model = EffortModel::Chosen;  // the call's, unless decided per gather
   if constexpr (kPolicy) model = ChooseEffortModel(effort, 1);
-  loop_work += count * (work_costs::kVrl + bound_work.before);
+  loop_work += count * (costs.operations.vrl + bound_work.before);
   for (int i = 0; i < count; ++i) {
     const bool usable = valid && Validate(vrls[i]) == QueryError::None;
     const int lane = i % kBoundBatch, first = i - lane, block = std::min(kBoundBatch, count - first);
     if (decide && lane == 0) {
       bounds(first, block, quick, nullptr), tight_taken = false;
-      loop_work += block * (bound_work.quick + work_costs::kDecision);
+      loop_work += block * (bound_work.quick + costs.operations.decision);
     }
     int n = 1;
     Real weight = 1;
@@ -248,6 +251,7 @@ void GatherMediumVrls(Samplers samplers, const RaySegment<Real>& camera, const M
   const bool valid = Validate(camera) == QueryError::None && Validate(medium) == QueryError::None;
   const EffortSettings& settings = effort.settings;
   const GatherSamplers named = samplers;
+  const CountedWork& costs = LanesWork();
   WithGatherSamplers<Real>(samplers, [&](auto step_one, auto step_two) {
     using VrlSampler = typename decltype(step_one)::type;
     using StepTwo = typename decltype(step_two)::type;
@@ -275,8 +279,8 @@ void GatherMediumVrls(Samplers samplers, const RaySegment<Real>& camera, const M
     detail::GatherEachVrl<2, policy>(
         effort, vrls, count, valid, uniform,
         // The tight bounds taken with the scores, counted before the loop.
-        scored ? detail::BoundWork{work_costs::kMediumQuickBound, 0, work_costs::kMediumTightBound}
-               : detail::BoundWork{work_costs::kMediumQuickBound, work_costs::kMediumTightBound},
+        scored ? detail::BoundWork{costs.operations.medium_quick_bound, 0, costs.operations.medium_tight_bound}
+               : detail::BoundWork{costs.operations.medium_quick_bound, costs.operations.medium_tight_bound},
         [&](int first, int n, Real* quick, Real* tight) {
           if (scored && tight) {  // taken with the scores
             std::copy(bound + first, bound + first + n, tight);
@@ -295,8 +299,9 @@ void GatherMediumVrls(Samplers samplers, const RaySegment<Real>& camera, const M
             int fits = 0;
             if constexpr (std::is_same_v<One, VrlMarginalEntry::Sampler<Real>>)
               for (int k = 0; k < b.count; ++k) fits += !fitted || fitted[k];
-            return b.count * (MediumSampleWork(taken) + (settings.measure_mixture ? work_costs::kMixtureDensity : 0)) +
-                   fits * MarginalFitWork();
+            return b.count * (costs.MediumSample(taken) +
+                              (settings.measure_mixture ? costs.operations.mixture_density : 0)) +
+                   fits * costs.operations.marginal_fit;
           };
           // A model in place of auto's rule: its segment sampler, after VrlMarginal for the
           // accurate one and VrlPoint for the others.
@@ -326,12 +331,13 @@ void GatherSurfaceVrls(Samplers samplers, Vec3<Real> point, Vec3<Real> normal, c
   const bool measure_mixture = effort.settings.measure_mixture;
   const bool valid = ValidateSurfacePoint(point, normal) == QueryError::None && Validate(medium) == QueryError::None;
   const SegmentChoice sampler = detail::CameraSamplerOf(samplers);
+  const CountedWork& costs = LanesWork();
   detail::WithCameraSampler(samplers, [&](auto entry) {
     using Chosen = typename decltype(entry)::template Sampler<Real>;
     constexpr bool policy = std::is_same_v<Chosen, AutoEntry::Sampler<Real>>;
     detail::GatherEachVrl<1, policy>(
         effort, vrls, count, valid, uniform,
-        detail::BoundWork{work_costs::kSurfaceQuickBound, work_costs::kSurfaceTightBound},
+        detail::BoundWork{costs.operations.surface_quick_bound, costs.operations.surface_tight_bound},
         [&](int first, int n, Real* quick, Real* tight) {
           SurfaceGatherBounds(point, normal, vrls + first, n, medium, quick, tight);
         },
@@ -340,7 +346,7 @@ void GatherSurfaceVrls(Samplers samplers, Vec3<Real> point, Vec3<Real> normal, c
           auto with = [&](auto type) {
             SampleSurfaceGathers<typename decltype(type)::type>(ValidQuery{}, point, normal, medium, b.segments,
                                                                 b.count, b.u[0], samples, measure_mixture);
-            return b.count * (SurfaceSampleWork(taken) + (measure_mixture ? work_costs::kMixtureDensity : 0));
+            return b.count * (costs.SurfaceSample(taken) + (measure_mixture ? costs.operations.mixture_density : 0));
           };
           if constexpr (policy) {
             if (model != EffortModel::Chosen)
