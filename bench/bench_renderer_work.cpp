@@ -7,10 +7,13 @@
 //       the control off (one sample per VRL), per VRL; the counter `counted` is the work its
 //       record counts less kConnect (the library's operations, each visit's occlusion ray): the
 //       rest is the integration's own per sample it connects
-//   Work/renderer/pixel/<scene>  a 32 x 32 pass of the scene's default transport, the control
-//       off, per pixel; counters `counted` and `vrls` (VRLs gathered per pixel): the rest, less
-//       the calls' own per sample, is the pixel's (camera path, VPLs, single scattering, film)
+//   Work/renderer/remainder/<scene>  a 32 x 32 pass path-traced alone (VRL bound 0: no light
+//       paths), the control off, per pixel; counters `counted` (its rays) and `vertices` (path
+//       vertices per pixel): the rest is fitted over the scenes as kPixel + kVertex per vertex
+//       (camera ray, film; shading, phase and light sampling, transmittance)
 #include "bench_common.hpp"
+
+#include <tbb/global_control.h>
 
 #include <vrlis_integration/gather.hpp>
 #include <vrlis_integration/light_paths.hpp>
@@ -103,7 +106,8 @@ void Call(benchmark::State& state, const char* name) {
   state.counters["counted"] = record.medium.work / items - renderer_work::kConnect;
 }
 
-void Pixel(benchmark::State& state, const char* name) {
+// A pixel path-traced alone (no light paths: the VRL bound 0), the control off.
+void Remainder(benchmark::State& state, const char* name) {
   using namespace vrlis::integration;
   auto built = vrlis::scenes::BuildScene(name, {});
   if (!built) return state.SkipWithError("scene not built");
@@ -111,19 +115,22 @@ void Pixel(benchmark::State& state, const char* name) {
   settings.width = settings.height = 32;
   settings.transport = built->transport;
   settings.transport.effort.on = false;
+  settings.vrl_bounds = {0.f};
   VrlRenderer renderer(built->scene, settings);
-  double counted = 0, gathers = 0;
+  // One thread: the benchmark's rate is of its own thread's time.
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  double counted = 0, vertices = 0;
   std::uint64_t pass = 0;
   for (auto _ : state) {
     PassStats stats;
     benchmark::DoNotOptimize(renderer.RenderPass(1, pass++, &stats));
-    counted += stats.work, gathers += double(stats.gathers);
+    counted += stats.work, vertices += double(stats.vertices);
   }
   const double pixels = double(state.iterations()) * settings.width * settings.height;
   state.SetItemsProcessed(static_cast<int64_t>(pixels));
-  // The work counted without the constants this and Call measure.
-  state.counters["counted"] = counted / pixels - renderer_work::kPixel - renderer_work::kConnect * gathers / pixels;
-  state.counters["vrls"] = gathers / pixels;
+  // The work counted without the constants this measures.
+  state.counters["counted"] = (counted - renderer_work::kVertex * vertices) / pixels - renderer_work::kPixel;
+  state.counters["vertices"] = vertices / pixels;
 }
 
 }  // namespace
@@ -136,8 +143,8 @@ void RegisterRendererWork() {
           [scene, occluded](benchmark::State& s) { Rays(s, scene, occluded); });
     benchmark::RegisterBenchmark((std::string("Work/renderer/call/") + scene).c_str(),
                                  [scene](benchmark::State& s) { Call(s, scene); });
-    benchmark::RegisterBenchmark((std::string("Work/renderer/pixel/") + scene).c_str(),
-                                 [scene](benchmark::State& s) { Pixel(s, scene); });
+    benchmark::RegisterBenchmark((std::string("Work/renderer/remainder/") + scene).c_str(),
+                                 [scene](benchmark::State& s) { Remainder(s, scene); });
   }
 }
 

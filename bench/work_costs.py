@@ -32,7 +32,7 @@ def per_item(path):
             continue
         name = b.get("run_name", b["name"])
         runs.setdefault(name, []).append(1e9 / b["items_per_second"])
-        for key in ("counted", "vrls"):
+        for key in ("counted", "vertices"):
             if key in b:
                 counters.setdefault(f"{name}#{key}", []).append(b[key])
     out = {name: statistics.median(v) for name, v in runs.items()}
@@ -76,13 +76,20 @@ def renderer(ns):
     scenes = [k.split("/")[-1] for k in ns if k.startswith("Work/renderer/call/") and "#" not in k]
     call = statistics.mean(max(0.0, ns[f"Work/renderer/call/{s}"] - ns[f"Work/renderer/call/{s}#counted"])
                            for s in scenes)
-    pixel = statistics.mean(max(0.0, ns[f"Work/renderer/pixel/{s}"] - ns[f"Work/renderer/pixel/{s}#counted"]
-                                - call * ns[f"Work/renderer/pixel/{s}#vrls"]) for s in scenes)
+    # A path-traced pixel's time less its rays, over its vertices: least squares over the scenes.
+    x = [ns[f"Work/renderer/remainder/{s}#vertices"] for s in scenes]
+    y = [ns[f"Work/renderer/remainder/{s}"] - ns[f"Work/renderer/remainder/{s}#counted"] for s in scenes]
+    mx, my = statistics.mean(x), statistics.mean(y)
+    vertex = max(0.0, sum((a - mx) * (b - my) for a, b in zip(x, y)) / sum((a - mx) ** 2 for a in x))
+    pixel = max(0.0, my - vertex * mx)
+    for s, a, b in zip(scenes, x, y):
+        print(f"remainder {s:14s} {a:6.2f} vertices/pixel, {b:8.1f} beyond rays, fit {pixel + vertex * a:8.1f}")
     return {
         "kIntersect": rays["intersect"],
         "kOccluded": rays["occluded"],
         "kConnect": call,
         "kPixel": pixel,
+        "kVertex": vertex,
     }
 
 
@@ -149,12 +156,14 @@ inline constexpr double kVisit = {r['kOccluded'] + r['kConnect']:.1f};
 // Work units (vrlis/effort/work.hpp) of what the example renderer owns: one ray of the example
 // scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather sample's
 // connection beyond the library's work and its ray (Work/renderer/call/, every gather taken
-// once: its time less what is counted, mean over the scenes); a pixel's beyond its calls and
-// rays (Work/renderer/pixel/).
+// once: its time less what is counted, mean over the scenes); a pixel's own and a path
+// vertex's beyond its rays (Work/renderer/remainder/: path-traced pixels' time less their
+// rays, least squares over the scenes in vertices per pixel).
 inline constexpr double kIntersect = {r['kIntersect']:.1f};
 inline constexpr double kOccluded = {r['kOccluded']:.1f};
 inline constexpr double kConnect = {r['kConnect']:.1f};
 inline constexpr double kPixel = {r['kPixel']:.1f};
+inline constexpr double kVertex = {r['kVertex']:.1f};
 
 }}  // namespace vrlis::integration::renderer_work
 """

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -97,7 +98,7 @@ int main(int argc, char** argv) {
   std::string scene_name, sampler = "auto", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
-  std::optional<float> vrl_bound;
+  std::string vrl_bound = "auto";
   double marginal_fraction = vrlis::integration::TransportSettings{}.marginal_fraction;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
@@ -150,8 +151,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--vrl-bound", vrl_bound, "The VRL gathers take their connections up to this geometry term (1 / r^2; "
                                            "cos / r^2 at a surface), the remainder the excess; inf: the gathers take "
-                                           "all (default: the scene's, 1 in corner, inf elsewhere)")
-      ->check(CLI::Range(0.f, std::numeric_limits<float>::infinity()));
+                                           "all; 0: no light paths, a path tracer; scene: the scene's (1 in corner, "
+                                           "inf elsewhere); auto: inf, 1, 0.1 or 0, whichever the first two passes "
+                                           "price lowest (docs/renderer.md#bound-choice)")
+      ->capture_default_str();
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");
   app.add_flag("--no-caustics", no_caustics, "Stop light paths at a specular surface met before any "
                                              "scattering (what a path tracer with point lights can render)");
@@ -185,7 +188,14 @@ int main(int argc, char** argv) {
   if (gather != "all" && gather != "m2m" && gather != "m2s") return Fail("unknown gather '" + gather + "' (expected all, m2m or m2s)");
   if (g && !(std::abs(*g) < 1)) return Fail("--g must lie in (-1, 1), got " + std::to_string(*g));
   if (!(vpl_bound >= 0) || !std::isfinite(vpl_bound)) return Fail("--vpl-bound must be finite and >= 0");
-  if (vrl_bound && !(*vrl_bound >= 0)) return Fail("--vrl-bound must be >= 0 (inf: no bound)");
+  std::optional<float> fixed_vrl_bound;
+  if (vrl_bound != "auto" && vrl_bound != "scene") {
+    char* end = nullptr;
+    const float b = std::strtof(vrl_bound.c_str(), &end);
+    if (vrl_bound.empty() || *end != '\0' || !(b >= 0))
+      return Fail("--vrl-bound must be auto, scene or a number >= 0 (inf: no bound), got '" + vrl_bound + "'");
+    fixed_vrl_bound = b;
+  }
   if (sigma_s && !(*sigma_s >= 0 && std::isfinite(*sigma_s))) return Fail("--sigma-s must be finite and >= 0");
   if (sigma_a && !(*sigma_a >= 0 && std::isfinite(*sigma_a))) return Fail("--sigma-a must be finite and >= 0");
   if (width < 1 || height < 1) return Fail("--width and --height must be positive");
@@ -231,7 +241,8 @@ int main(int argc, char** argv) {
   settings.transport.sampling = *method;
   settings.transport.light_caustics = !no_caustics;
   settings.transport.vpl_bound = vpl_bound;
-  if (vrl_bound) settings.transport.vrl_bound = *vrl_bound;
+  if (fixed_vrl_bound) settings.transport.vrl_bound = *fixed_vrl_bound;
+  if (vrl_bound == "auto" && integrator == "vrl") settings.vrl_bounds = vrlis::integration::kAutoBounds;
   settings.transport.effort.on = effort == "on";
   settings.transport.marginal_fraction = marginal_fraction;
   std::atomic<int> rows_done{0};
@@ -242,6 +253,7 @@ int main(int argc, char** argv) {
     settings.transport.direct = settings.transport.indirect = false;
     settings.transport.surface_to_surface = settings.transport.surface_to_medium = false;
     settings.transport.vrl_bound = vrlis::integration::kUnbounded;  // the gather whole: no remainder takes a share
+    settings.vrl_bounds.clear();
   }
   vrlis::integration::QueryLog query_log(dump_every);
   if (!dump_queries.empty()) settings.transport.query_log = &query_log;
@@ -296,15 +308,26 @@ int main(int argc, char** argv) {
   if (progress.joinable()) progress.join();
   const double wall = elapsed();
   vrlis::integration::Film image = acc.Mean();
+  // The bound the passes after the pilot took, where the renderer chose it.
+  float used_bound = settings.transport.vrl_bound;
+  auto bound_json = [](float b) { return b < vrlis::integration::kUnbounded ? nlohmann::json(b) : nlohmann::json("inf"); };
+  nlohmann::json pilot = nlohmann::json::array();  // what the choice saw of each bound
+  if (auto* vrl = dynamic_cast<vrlis::integration::VrlRenderer*>(renderer.get()))
+    if (vrl->bound_choice().chosen()) {
+      used_bound = *vrl->bound_choice().chosen();
+      for (const auto& c : vrl->bound_choice().candidates())
+        pilot.push_back({{"bound", bound_json(c.bound)}, {"variance", c.variance}, {"work", c.work}, {"pixels", c.pixels}});
+    }
 
   nlohmann::json summary = {
       {"scene", scene_name}, {"integrator", integrator}, {"sampler", sampler}, {"gather", gather}, {"effort", effort},
       {"g", built->scene.medium.g}, {"sigma_s", built->scene.medium.sigma_s}, {"sigma_a", built->scene.medium.sigma_a},
       {"width", width}, {"height", height}, {"vrls_per_pass", vrls}, {"seed", seed}, {"threads", workers},
-      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"marginal_fraction", marginal_fraction}, {"vrl_bound", settings.transport.vrl_bound < vrlis::integration::kUnbounded ? nlohmann::json(settings.transport.vrl_bound) : nlohmann::json("inf")}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
+      {"jitter", !no_jitter}, {"pixel_samples", pixel_samples}, {"caustics", !no_caustics}, {"vpl_bound", vpl_bound}, {"marginal_fraction", marginal_fraction}, {"vrl_bound", bound_json(used_bound)}, {"vrl_bound_choice", vrl_bound}, {"passes", acc.passes()}, {"vrl_count", vrl_count},
       {"gathers", gathers}, {"wall_time_s", wall}, {"render_time_s", pass_seconds}, {"counted_work", pass_work},
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;
+  if (!pilot.empty()) summary["vrl_bound_pilot"] = pilot;
   if (ref) summary["rmse"] = Rmse(image, *ref);
   std::string err;
   if (!dump_queries.empty()) {

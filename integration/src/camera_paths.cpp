@@ -5,6 +5,7 @@
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
 #include "vrlis_integration/path_tracer.hpp"
+#include "vrlis_integration/work.hpp"
 
 namespace vrlis::integration {
 
@@ -21,6 +22,7 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       vrlis::SegmentSamplerFor(tr.sampling.segment, vrlis::ChooseEffortModel(effort.surface, 1));
   Spectrum L, beta(1.f);
   for (int depth = 0; depth < tr.max_depth; ++depth) {
+    CountVertex();
     SurfaceHit hit;
     bool found = scene.Intersect(ray, &hit);
     Interval iv = m.Clip(ray, found ? hit.t : kInfinity);

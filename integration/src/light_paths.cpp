@@ -1,4 +1,5 @@
 #include "vrlis_integration/light_paths.hpp"
+#include "vrlis_integration/work.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -50,6 +51,7 @@ void TracePath(const Scene& scene, const TransportSettings& tr, const LatticeRot
     return true;
   };
   for (int depth = 0; depth < tr.max_depth; ++depth) {
+    CountVertex();
     SurfaceHit hit;
     bool found = scene.Intersect(ray, &hit);
     Interval iv = m.Clip(ray, found ? hit.t : kInfinity);
@@ -96,17 +98,21 @@ Rotation LatticeRotation(const PointLight& light, std::uint64_t seed, std::uint6
 }
 
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
-                                 std::uint64_t seed, std::uint64_t pass, std::vector<Vpl>* vpls) {
+                                 std::uint64_t seed, std::uint64_t pass, std::vector<Vpl>* vpls, double* work) {
   LatticeRotations rotations;
   for (std::size_t k = 0; k < scene.lights.points.size(); ++k)
     rotations.push_back(LatticeRotation(scene.lights.points[k], seed, pass, k));
   std::vector<std::vector<Vrl>> per_path(static_cast<std::size_t>(count));
   std::vector<std::vector<Vpl>> vpls_per_path(vpls ? static_cast<std::size_t>(count) : 0);
+  std::vector<double> path_work(static_cast<std::size_t>(count));  // summed in order: not by thread
   tbb::parallel_for(0, count, [&](int i) {
     Rng rng(seed, pass, static_cast<std::uint64_t>(i), StreamPurpose::LightPath);
     const auto k = static_cast<std::size_t>(i);
+    WorkScope scope(&path_work[k], false);
     TracePath(scene, transport, rotations, i, count, rng, &per_path[k], vpls ? &vpls_per_path[k] : nullptr);
   });
+  if (work)
+    for (double w : path_work) *work += w;
   std::vector<Vrl> vrls;
   for (const auto& p : per_path) vrls.insert(vrls.end(), p.begin(), p.end());
   if (vpls) {

@@ -2,6 +2,7 @@
 
 #include "vrlis_integration/direct.hpp"
 #include "vrlis_integration/gather.hpp"
+#include "vrlis_integration/work.hpp"
 
 namespace vrlis::integration {
 namespace {
@@ -21,6 +22,7 @@ Spectrum PathTracer::Li(Ray ray, Rng& rng, int depth, const RemainderStart* star
   const MediumShare medium_share = start ? MediumShare{start->from, tr_.vrl_bound} : MediumShare{};
   if (medium_shared) at_vertex(start->from.p, start->lobe, &medium_share);
   for (bool first = true; depth < tr_.max_depth; ++depth, first = false) {
+    CountVertex();
     const RemainderStart* shared_from = first ? start : nullptr;
     SurfaceHit hit;
     bool found = scene_.Intersect(ray, &hit);

@@ -55,15 +55,19 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   auto t0 = std::chrono::steady_clock::now();
   // Without a medium there are no light paths, and no VPLs to share the remainder's
   // connections with: the remainder then carries them all.
-  const bool light_paths = scene_.medium.Present() && !scene_.lights.Powers().empty();
+  // A pixel whose bound choice is 0 is the path tracer's, and takes no light paths.
+  const bool light_paths =
+      scene_.medium.Present() && !scene_.lights.Powers().empty() && (!bounds_.active() || bounds_.LightPaths());
   TransportSettings transport = settings_.transport;
   if (!light_paths) transport.vpl_bound = 0;
   std::vector<Vpl> traced;
+  double light_work = 0;
   std::vector<Vrl> vrls = light_paths ? TraceLightPaths(scene_, transport, settings_.vrls_per_pass, seed, pass,
-                                                        transport.vpl_bound > 0 ? &traced : nullptr)
+                                                        transport.vpl_bound > 0 ? &traced : nullptr, &light_work)
                                       : std::vector<Vrl>{};
   const VplSet vpls(std::move(traced));
-  std::atomic<std::uint64_t> gathers{0};
+  const PathTracer path_tracer(scene_, settings_.transport);  // for pixels whose bound choice is 0
+  std::atomic<std::uint64_t> gathers{0}, vertices{0};
   // Each pixel's counted work (work.hpp) outside its gather calls, and within them (their
   // records count it), summed in pixel order after the pass: with the effort control on,
   // what the price learns from.
@@ -81,9 +85,12 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(settings_.width) + static_cast<std::size_t>(x);
+    TransportSettings pixel_transport = transport;
+    if (bounds_.active()) pixel_transport.vrl_bound = bounds_.Bound(x, y);
+    const bool path_traced = pixel_transport.vrl_bound == 0;  // the path tracer's pixel: no light paths
     GatherOptions options;
     options.query_log = transport.query_log, options.weight_log = transport.weight_log;
-    options.bound = transport.vrl_bound;
+    options.bound = pixel_transport.vrl_bound;
     if (scored) options.marginal_scores = &pass_scores.local();
     vrlis::PixelRecord counted_only;  // with the control off: the calls' work and samples
     if (effort.on) {
@@ -100,26 +107,30 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
       options.effort.record = &counted_only;
     }
     Spectrum L;
+    const std::uint64_t vertices_before = ThreadVertices();
     {
       WorkScope scope(&pixel_work[i]);  // the pixel's own, from zero, whatever its thread did before
       ThreadWork() += renderer_work::kPixel;
-      L = VrlRadiance(scene_, transport, vrls, vpls, ray, rng, options);
+      L = path_traced ? path_tracer.Li(ray, rng) : VrlRadiance(scene_, pixel_transport, vrls, vpls, ray, rng, options);
     }
     const vrlis::PixelRecord& record = *options.effort.record;
     gather_work[i] = record.medium.work + record.surface.work;
     gathers.fetch_add(static_cast<std::uint64_t>(record.medium.samples + record.surface.samples),
                       std::memory_order_relaxed);
+    vertices.fetch_add(ThreadVertices() - vertices_before, std::memory_order_relaxed);
     return L;
   });
-  double other = 0, work = 0;
+  double other = 0, work = light_work;
   for (std::size_t i = 0; i < pixels; ++i) other += pixel_work[i], work += pixel_work[i] + gather_work[i];
-  if (effort.on) {
-    std::vector<double> values(pixels);
-    for (std::size_t i = 0; i < pixels; ++i) values[i] = std::sqrt(film.pixels[i].MeanSquare());
-    price_.EndPass(values, other);
+  std::vector<double> values(effort.on || bounds_.active() ? pixels : 0);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::sqrt(film.pixels[i].MeanSquare());
+  if (effort.on) price_.EndPass(values, other);
+  if (bounds_.active()) {
+    for (std::size_t i = 0; i < pixels; ++i) pixel_work[i] += gather_work[i];
+    bounds_.EndPass(settings_.width, values, pixel_work, light_work);
   }
   for (const vrlis::ScoreOctaves& s : pass_scores) marginal_scores_ += s;
-  if (stats) *stats = {vrls.size(), gathers.load(), Since(t0), work};
+  if (stats) *stats = {vrls.size(), gathers.load(), vertices.load(), Since(t0), work};
   return film;
 }
 
@@ -127,7 +138,7 @@ Film PathTracingRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, Pas
   auto t0 = std::chrono::steady_clock::now();
   PathTracer pt(scene_, settings_.transport);
   Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int, int) { return pt.Li(ray, rng); });
-  if (stats) *stats = {0, 0, Since(t0)};
+  if (stats) *stats = {0, 0, 0, Since(t0)};
   return film;
 }
 

@@ -19,8 +19,10 @@ Rotation LatticeRotation(const PointLight& light, std::uint64_t seed, std::uint6
 // `count` light paths of one pass, each starting with flux (light power / count); the VRLs
 // (and the VPLs, if `vpls` is set) come out in path order, whatever the thread count. A path
 // whose first vertex is specular makes no VPLs: the remainder, which would share their
-// connections, cannot sample light through a specular surface from a delta light.
+// connections, cannot sample light through a specular surface from a delta light. If `work`
+// is set, the paths' counted work (work.hpp) is added to it.
 std::vector<Vrl> TraceLightPaths(const Scene& scene, const TransportSettings& transport, int count,
-                                 std::uint64_t seed, std::uint64_t pass, std::vector<Vpl>* vpls = nullptr);
+                                 std::uint64_t seed, std::uint64_t pass, std::vector<Vpl>* vpls = nullptr,
+                                 double* work = nullptr);
 
 }  // namespace vrlis::integration

@@ -5,10 +5,12 @@
 // clock. A driver can interleave passes of several samplers, or renderers, in one process.
 #include <atomic>
 #include <cstdint>
+#include <vector>
 
 #include <vrlis/effort/marginal_fits.hpp>
 #include <vrlis/effort/price.hpp>
 
+#include "bound_choice.hpp"
 #include "film.hpp"
 #include "pixel_samples.hpp"
 #include "scene.hpp"
@@ -17,10 +19,14 @@
 
 namespace vrlis::integration {
 
+// The VRL bounds a render chooses among by default: the gathers whole, two bounds, the
+// remainder alone.
+inline const std::vector<float> kAutoBounds = {kUnbounded, 1.f, 0.1f, 0.f};
+
 // A pass's VRLs and gathers, its seconds (wall clock: for the driver's report, never a
-// decision) and the camera pass's counted work (work.hpp; the VRL renderer's).
+// decision) and its counted work, light and camera passes (work.hpp; the VRL renderer's).
 struct PassStats {
-  std::uint64_t vrls = 0, gathers = 0;
+  std::uint64_t vrls = 0, gathers = 0, vertices = 0;  // vertices: the camera pass's (work.hpp)
   double seconds = 0, work = 0;
 };
 
@@ -33,6 +39,10 @@ struct RenderSettings {
   // the tests and comparisons estimate from that spread and keep the default.
   PixelSamples pixel_samples = PixelSamples::Independent;
   TransportSettings transport;
+  // If not empty, the VRL renderer chooses transport.vrl_bound among these per image by the
+  // price of variance, 0 standing for no light paths at all (bound_choice.hpp); kAutoBounds
+  // are vrl_render's default.
+  std::vector<float> vrl_bounds;
   // If set, incremented after each finished image row (any thread), for progress displays.
   std::atomic<int>* rows_done = nullptr;
 };
@@ -60,16 +70,20 @@ class Renderer {
 class VrlRenderer : public Renderer {
  public:
   VrlRenderer(const Scene& scene, const RenderSettings& settings)
-      : Renderer(scene, settings), price_(settings.width, settings.height, kVisitWork) {}
+      : Renderer(scene, settings), price_(settings.width, settings.height, kVisitWork),
+        bounds_(settings.vrl_bounds) {}
   Film RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) override;
   const vrlis::EffortPrice& effort_price() const { return price_; }
   void set_effort_price(const vrlis::EffortPrice& price) { price_ = price; }
   // The scores VrlMarginal's fits are given by, learned like the price.
   const vrlis::ScoreOctaves& marginal_scores() const { return marginal_scores_; }
   void set_marginal_scores(const vrlis::ScoreOctaves& scores) { marginal_scores_ = scores; }
+  // The choice of the VRL bound (RenderSettings::vrl_bounds), learned from the pilot passes.
+  const BoundChoice& bound_choice() const { return bounds_; }
 
  private:
   vrlis::EffortPrice price_;
+  BoundChoice bounds_;
   vrlis::ScoreOctaves marginal_scores_;  // of the passes rendered so far
 };
 

@@ -12,5 +12,6 @@ inline constexpr double kIntersect = 35.7;
 inline constexpr double kOccluded = 27.5;
 inline constexpr double kConnect = 39.3;
 inline constexpr double kPixel = 0.0;
+inline constexpr double kVertex = 0.0;
 
 }  // namespace vrlis::integration::renderer_work

@@ -4,6 +4,8 @@
 // counts a gather call's own work in its tally; the scene counts its rays here. A pixel runs
 // on one thread from start to end, so the work counted on that thread between two points of
 // it is that pixel's, whatever the other threads do.
+#include <cstdint>
+
 #include "renderer_work.hpp"
 
 namespace vrlis::integration {
@@ -15,6 +17,20 @@ inline constexpr double kVisitWork = renderer_work::kOccluded + renderer_work::k
 inline double& ThreadWork() {
   thread_local double work = 0;
   return work;
+}
+
+// Path vertices counted on this thread so far: for tools/work_costs.sh, which fits
+// renderer_work::kVertex by them.
+inline std::uint64_t& ThreadVertices() {
+  thread_local std::uint64_t vertices = 0;
+  return vertices;
+}
+
+// One vertex of a camera, remainder or light path: its work beyond its rays (shading, phase
+// and light sampling, transmittance), a constant.
+inline void CountVertex() {
+  ThreadWork() += renderer_work::kVertex;
+  ++ThreadVertices();
 }
 
 // Adds the work counted on this thread during its scope to *work, if set. The scope counts
