@@ -138,7 +138,7 @@ def main():
     L.append("- Efficiency: `1 / (mean relative variance x time per sample)`, in 1/s; "
              "the margin is the winner's efficiency over the runner-up's.\n")
 
-    # Speed: the thesis's samplers and ours against the baseline (Novák's), all from the registry.
+    # Speed: the thesis's samplers and ours against the baseline (Novák's), as the lab lists them.
     base = label(baseline())
     claimed = [label(n) for n in thesis()]
     ours = [label(n) for n in tabled if n in own()]

@@ -165,13 +165,6 @@ int main(int argc, char** argv) {
                                                  "vrlis_integration/query_log.hpp)");
   app.add_option("--dump-every", dump_every, "Keep about one gather query in K for --dump-queries")
       ->capture_default_str();
-  app.add_flag("--list-samplers", "Print the samplers (names, labels, properties) as JSON and exit");
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--list-samplers") {
-      std::printf("{\"segment\": %s,\n \"vrl\": %s}\n", vrlis::SegmentSamplers::ListJson().c_str(),
-                  vrlis::VrlSamplers::ListJson().c_str());
-      return 0;
-    }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

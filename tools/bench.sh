@@ -23,7 +23,7 @@ pairs=${VRLIS_ACCURACY_PAIRS:-256}
 
 if [ -z "${VRLIS_BENCH_BUILD:-}" ]; then  # (the CMake `bench` target passes its own, configured build)
   source tools/lib.sh
-  build_preset release vrlis_bench vrlis_accuracy vrl_render  # vrl_render: the sampler list (tools/samplers.py)
+  build_preset release vrlis_bench vrlis_accuracy vrlis_samplers  # vrlis_samplers: the sampler list (tools/samplers.py)
 fi
 mkdir -p "$out"
 

@@ -20,5 +20,5 @@ prepare_vrl_compare() {
   for a in "$@"; do
     if [ "$a" = "--publish" ]; then publish="docs/compare"; else args+=("$a"); fi
   done
-  build_preset release vrl_compare vrl_render  # vrl_render: the sampler list (tools/samplers.py)
+  build_preset release vrl_compare vrlis_samplers  # vrlis_samplers: the sampler list (tools/samplers.py)
 }

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The samplers as every chart, table and script shows them: names, labels and properties
-read from the library's registry (include/vrlis/method.hpp) through
-`vrl_render --list-samplers`, so that the registry stays the one table of samplers. Shared
-by bench/plot.py, bench/accuracy_scenes.py, bench/compare/plot.py, tools/speed.sh and
-tools/stability.sh.
+"""The samplers as every chart, table and script shows them: the library's registry
+(include/vrlis/method.hpp) with the samplers' roles in the lab (bench/sampler_roles.hpp),
+read through the lab's `vrlis_samplers`, so that no script names a sampler. Shared by
+bench/plot.py, bench/accuracy_scenes.py, bench/compare/plot.py, bench/compare/thesis.py,
+bench/compare/effort.py and tools/speed.sh.
 
     tools/samplers.py BUILD_DIR [--per-sample]
 prints the segment samplers' names, one a line (--per-sample: without the policies, which
@@ -23,10 +23,9 @@ _ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 @functools.lru_cache(maxsize=None)
 def registry(build=None):
-    """{"segment": [entry...], "vrl": [entry...]}, each entry {name, label, own, policy, round_trip, thesis,
-    baseline}."""
+    """{"segment": [entry...], "vrl": [entry...]}, each entry {name, own, policy, thesis, baseline}."""
     build = build or os.environ.get("VRLIS_BUILD", os.path.join(_ROOT, "build"))
-    listing = subprocess.run([os.path.join(build, "examples", "vrl_render"), "--list-samplers"], check=True,
+    listing = subprocess.run([os.path.join(build, "bench", "vrlis_samplers")], check=True,
                              capture_output=True, text=True).stdout
     return json.loads(listing)
 
@@ -48,21 +47,17 @@ def policies():
 
 def thesis():
     """The thesis's samplers, in registry order: the ones its claims are tested on."""
-    return [e["name"] for e in registry()["segment"] if e.get("thesis")]  # (listings before the property: none)
+    return [e["name"] for e in registry()["segment"] if e["thesis"]]
 
 
 def baseline():
     """The sampler every efficiency ratio is to."""
-    found = [e["name"] for e in registry()["segment"] if e.get("baseline")]
-    if not found:
-        sys.exit("tools/samplers.py: the registry's listing marks no baseline (a build older than the property?)")
-    return found[0]
+    return next(e["name"] for e in registry()["segment"] if e["baseline"])
 
 
 def label(name):
-    """The label of a registry name ("full-product" -> "FullProduct")."""
-    entry = _segment().get(name) or {e["name"]: e for e in registry()["vrl"]}.get(name)
-    return entry["label"] if entry else name
+    """The label of a registry name, as the library spells its types ("full-product" -> "FullProduct")."""
+    return "".join(word[:1].upper() + word[1:] for word in name.split("-"))
 
 
 def style(name):

@@ -10,7 +10,8 @@
 # - vrl_render VRL gathers per second, per scene x sampler x commit, on 1 and 2 threads, and
 #   the 2-thread speedup;
 # - vrlis_bench's camera step per sample (fit + sample + pdf), per sampler x g x commit, and
-#   the ratios of the thesis's samplers to the baseline (Novák's), both from the registry;
+#   the ratios of the thesis's samplers to the baseline (Novák's), both as NEW's lab lists them
+#   (vrlis_samplers, so NEW is a commit that has it);
 # - step one per sample (VrlPoint, VrlMarginal) in both commits;
 # - NEW's camera step on each scene's own queries (SceneCamera/, from vrl_render --dump-queries)
 #   and the cost of one gather.
@@ -47,18 +48,18 @@ other=()
 [ -z "${VRLIS_SPEED_PIN:-}" ] || other=(taskset -c "$(( (VRLIS_SPEED_PIN + 1) % $(nproc) ))")
 
 tools/deps.sh
-build_commit() {  # commit, build dir: the commit's renderer and benchmarks, built alike
+build_commit() {  # commit, build dir, [more targets]: the commit's renderer and benchmarks, built alike
   rm -rf "$2-src" && mkdir -p "$2-src"
   git archive "$1" | tar -x -C "$2-src"
   cmake -S "$2-src" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVRLIS_BUILD_TESTS=OFF -DVRLIS_BUILD_BENCH=ON \
     -DVRLIS_BUILD_EXAMPLES=ON "-DCMAKE_CXX_FLAGS=${VRLIS_SPEED_CXXFLAGS:-}" >/dev/null
-  cmake --build "$2" --target vrl_render vrlis_bench -j"$(nproc)" >/dev/null
+  cmake --build "$2" --target vrl_render vrlis_bench "${@:3}" -j"$(nproc)" >/dev/null
 }
 base="$out/base"
 new="$out/new"
 build_commit "$base_ref" "$base"
-build_commit "$new_ref" "$new"
-# The samplers: NEW's registry (vrl_render --list-samplers), policies left out.
+build_commit "$new_ref" "$new" vrlis_samplers  # the sampler list (tools/samplers.py), NEW's alone
+# The samplers: NEW's registry and their roles in the lab (vrlis_samplers), policies left out.
 samplers=${VRLIS_SPEED_SAMPLERS:-$(/usr/bin/python3 tools/samplers.py "$new" --per-sample | tr '\n' ' ')}
 baseline=$(VRLIS_BUILD="$new" /usr/bin/python3 -c 'import sys; sys.path.insert(0, "tools"); import samplers; print(samplers.baseline())')
 # Profiled: the baseline where the medium-to-medium gathers are all (bidirectional), and the

@@ -12,6 +12,8 @@
 #include <vrlis_integration/gather.hpp>
 #include <vrlis_integration/renderer.hpp>
 
+#include "sampler_roles.hpp"
+
 namespace vrlis::compare {
 
 // What the study compares: the gather's samplers, and whether the effort control
@@ -46,13 +48,14 @@ inline std::vector<Method> AllSamplers() {
 // A published method at fixed effort: a sampler from the literature (not ours, not a policy)
 // with Novák's step one, every gather taken once.
 inline bool IsFixedPublished(const Method& m) {
-  const auto i = static_cast<std::size_t>(m.sampler.segment.index());
   return !m.effort && m.sampler.vrl == vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>() &&
-         !vrlis::SegmentSamplers::kOwn[i] && !vrlis::SegmentSamplers::kPolicy[i];
+         vrlis::SegmentSamplers::WithEntry(m.sampler.segment, [](auto entry) {
+           return !lab::kOwn<decltype(entry)> && !lab::kPolicy<decltype(entry)>;
+         });
 }
-// Every ratio is to the registry's baseline (Novák's sampler) with Novák's step one, every
-// gather taken once.
-inline const Method kBaseline{{*vrlis::SegmentSamplers::Baseline(), vrlis::VrlSamplers::Of<vrlis::VrlPointEntry>()}, false};
+// Every ratio is to the lab's baseline (Novák's sampler) with Novák's step one, every gather
+// taken once.
+inline const Method kBaseline{vrlis::FixedSamplers<lab::Baseline>{}, false};
 
 // One VRL renderer of a scene; Render times a pass with the given camera sampler.
 class PassRenderer {

@@ -10,7 +10,7 @@ import os
 
 import matplotlib.pyplot as plt
 
-import samplers  # tools/samplers.py: the registry's table (bench/compare/plot.py puts it on the path)
+import samplers  # tools/samplers.py: the samplers and their roles (bench/compare/plot.py puts it on the path)
 # Student's t, 97.5% quantile, by degrees of freedom (the replicates less one).
 T975 = {2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228, 11: 2.201,
         12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131, 19: 2.093, 24: 2.064, 29: 2.045}

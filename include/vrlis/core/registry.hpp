@@ -1,6 +1,6 @@
 #pragma once
 // Run-time choice among samplers without virtual calls. A registry lists entries, each a
-// struct with a name, a sampler template and the properties it sets (Registry::kOwn below):
+// struct with a name, a sampler template and, where it holds, kRoundTripInDistribution:
 //   struct NovakEntry { static constexpr std::string_view kName = "novak";
 //                       template <typename Real> using Sampler = Novak<Real>; };
 // A Choice is an index into the list; With(choice, query, f) builds the chosen sampler from
@@ -8,7 +8,6 @@
 // the inner loop holds one branch on the index instead of an indirect call.
 #include <array>
 #include <optional>
-#include <string>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -46,17 +45,12 @@ struct RealOf<Query<R>> {
   using type = R;
 };
 
-// An entry's properties, each false unless the entry states it: Flag<Entry, Of>::value is
-// Of<Entry>::value where the entry has the member Of reads, else false.
-template <typename Entry, template <typename> class Of, typename = void>
-struct Flag : std::false_type {};
-template <typename Entry, template <typename> class Of>
-struct Flag<Entry, Of, std::void_t<Of<Entry>>> : std::bool_constant<Of<Entry>::value> {};
-template <typename E> using OwnOf = std::bool_constant<E::kOwn>;
-template <typename E> using PolicyOf = std::bool_constant<E::kPolicy>;
-template <typename E> using RoundTripInDistributionOf = std::bool_constant<E::kRoundTripInDistribution>;
-template <typename E> using ThesisOf = std::bool_constant<E::kThesis>;
-template <typename E> using BaselineOf = std::bool_constant<E::kBaseline>;
+// Entry::kRoundTripInDistribution where the entry states it, else false.
+template <typename Entry, typename = void>
+struct RoundTripInDistribution : std::false_type {};
+template <typename Entry>
+struct RoundTripInDistribution<Entry, std::void_t<decltype(Entry::kRoundTripInDistribution)>>
+    : std::bool_constant<Entry::kRoundTripInDistribution> {};
 
 template <typename F, typename Entry, typename... Rest>
 decltype(auto) DispatchEntry(int index, F& f) {
@@ -74,18 +68,10 @@ struct Registry {
   using Choice = vrlis::Choice<Registry>;
   static constexpr std::size_t kCount = sizeof...(Entries);
   static constexpr std::array<std::string_view, kCount> kNames = {Entries::kName...};
-  // What the tools, charts and tests know of a sampler beyond its name:
-  // kOwn: this project's sampler rather than a published one;
-  // kPolicy: it chooses among the other samplers per query;
-  // kRoundTripInDistribution: invert(sample(u)) == u holds in distribution only, not pointwise;
-  // kThesis: proposed by Oppitz's thesis, whose claims the study tests on it;
-  // kBaseline: the sampler every efficiency ratio is to (Novák's).
-  static constexpr std::array<bool, kCount> kOwn = {detail::Flag<Entries, detail::OwnOf>::value...};
-  static constexpr std::array<bool, kCount> kPolicy = {detail::Flag<Entries, detail::PolicyOf>::value...};
+  // Per entry: invert(sample(u)) == u holds in distribution only, not pointwise (so a check
+  // of the round trip compares distributions for it).
   static constexpr std::array<bool, kCount> kRoundTripInDistribution = {
-      detail::Flag<Entries, detail::RoundTripInDistributionOf>::value...};
-  static constexpr std::array<bool, kCount> kThesis = {detail::Flag<Entries, detail::ThesisOf>::value...};
-  static constexpr std::array<bool, kCount> kBaseline = {detail::Flag<Entries, detail::BaselineOf>::value...};
+      detail::RoundTripInDistribution<Entries>::value...};
   // Every sampler in precision Real, as a type list (e.g. for a test over all of them).
   template <typename Real>
   using Samplers = std::tuple<typename Entries::template Sampler<Real>...>;
@@ -103,42 +89,10 @@ struct Registry {
     return all;
   }
 
-  // The entry marked kBaseline (the first, should several be).
-  static constexpr std::optional<Choice> Baseline() {
-    for (std::size_t i = 0; i < kCount; ++i)
-      if (kBaseline[i]) return Choice(static_cast<int>(i));
-    return std::nullopt;
-  }
-
   static constexpr std::optional<Choice> Parse(std::string_view name) {
     for (std::size_t i = 0; i < kCount; ++i)
       if (kNames[i] == name) return Choice(static_cast<int>(i));
     return std::nullopt;
-  }
-
-  // The table as JSON, one object per entry: name, label ("full-product" -> "FullProduct"),
-  // own, policy, round_trip ("pointwise" or "distribution"), thesis, baseline. What the lab's scripts and charts
-  // read (vrl_render --list-samplers, tools/samplers.py) instead of naming samplers themselves.
-  static std::string ListJson() {
-    std::string json = "[";
-    for (std::size_t i = 0; i < kCount; ++i) {
-      std::string label;
-      bool word_start = true;
-      for (char c : kNames[i]) {
-        if (c == '-') {
-          word_start = true;
-          continue;
-        }
-        label += word_start && c >= 'a' && c <= 'z' ? char(c - 'a' + 'A') : c;
-        word_start = false;
-      }
-      auto flag = [](bool b) { return b ? "true" : "false"; };
-      json += std::string(i ? ",\n " : "\n ") + "{\"name\": \"" + std::string(kNames[i]) + "\", \"label\": \"" + label +
-              "\", \"own\": " + flag(kOwn[i]) + ", \"policy\": " + flag(kPolicy[i]) + ", \"round_trip\": \"" +
-              (kRoundTripInDistribution[i] ? "distribution" : "pointwise") + "\", \"thesis\": " + flag(kThesis[i]) +
-              ", \"baseline\": " + flag(kBaseline[i]) + "}";
-    }
-    return json + "]";
   }
 
   // Returns f(Entry{}) for the chosen entry: a caller that builds many samplers of one

@@ -256,7 +256,6 @@ using Auto = SegmentSampler<AutoAngle<Real>>;
 // Its entry in the run-time sampler tables (method.hpp).
 struct AutoEntry {
   static constexpr std::string_view kName = "auto";
-  static constexpr bool kOwn = true, kPolicy = true;
   template <typename Real>
   using Sampler = Auto<Real>;
 };

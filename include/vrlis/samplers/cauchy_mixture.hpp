@@ -134,7 +134,6 @@ using CauchyMixture = SegmentSampler<CauchyMixtureAngle<Real>>;
 struct CauchyMixtureEntry {
   static constexpr std::string_view kName = "cauchy-mixture";
   static constexpr bool kRoundTripInDistribution = true;  // sample() picks a component first
-  static constexpr bool kThesis = true;
   template <typename Real>
   using Sampler = CauchyMixture<Real>;
 };

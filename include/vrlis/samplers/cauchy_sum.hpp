@@ -158,7 +158,6 @@ using CauchySum = SegmentSampler<CauchySumAngle<Real>>;
 // Its entry in the run-time sampler tables (method.hpp).
 struct CauchySumEntry {
   static constexpr std::string_view kName = "cauchy-sum";
-  static constexpr bool kThesis = true;
   template <typename Real>
   using Sampler = CauchySum<Real>;
 };

@@ -25,7 +25,6 @@ using FullProduct = SegmentSampler<PiecewiseLinearAngle<Real, kNodes, FullProduc
 // Its entry in the run-time sampler tables (method.hpp).
 struct FullProductEntry {
   static constexpr std::string_view kName = "full-product";
-  static constexpr bool kOwn = true;
   template <typename Real>
   using Sampler = FullProduct<Real>;
 };

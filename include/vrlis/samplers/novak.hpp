@@ -215,7 +215,6 @@ using Novak = SegmentSampler<PiecewiseLinearAngle<Real, kNodes, PhaseProduct<Rea
 // Its entry in the run-time sampler tables (method.hpp).
 struct NovakEntry {
   static constexpr std::string_view kName = "novak";
-  static constexpr bool kBaseline = true;
   template <typename Real>
   using Sampler = Novak<Real>;
 };

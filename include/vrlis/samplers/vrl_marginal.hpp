@@ -305,7 +305,6 @@ class VrlMarginal {
 // Its entry in the run-time sampler tables (method.hpp).
 struct VrlMarginalEntry {
   static constexpr std::string_view kName = "marginal";
-  static constexpr bool kOwn = true;
   template <typename Real>
   using Sampler = VrlMarginal<Real>;
 };

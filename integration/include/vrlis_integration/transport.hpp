@@ -14,7 +14,7 @@ class WeightLog;
 struct TransportSettings {
   // How every VRL gather samples: step one and step two of the medium-to-medium gather; the
   // medium-to-surface gather and single scattering use its camera sampler.
-  vrlis::GatherSamplers sampling{*vrlis::SegmentSamplers::Baseline(), {}};
+  vrlis::GatherSamplers sampling{vrlis::SegmentSamplers::Of<vrlis::NovakEntry>(), {}};
   bool medium_to_medium = true;   // VRL gather along camera segments
   bool medium_to_surface = true;  // VRL gather at the diffuse surface ending the camera chain
   bool direct = true;             // next-event estimation at the first camera vertex
