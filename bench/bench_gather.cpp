@@ -21,6 +21,7 @@
 // pdf). docs/bench.md (section "Cost of one gather") puts these together with a profile of
 // vrl_render (occlusion ray, random numbers, bookkeeping).
 #include "bench_common.hpp"
+#include "gather_instances.hpp"
 
 #include <vrlis/gather/medium_gather.hpp>
 #include <vrlis/gather/surface_gather.hpp>

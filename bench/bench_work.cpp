@@ -10,6 +10,7 @@
 //   Work/mixture-density   GatherBatch of `auto` with its samples' density over the mixture
 //                          (measure_mixture), over the same without it, per sample
 #include "bench_common.hpp"
+#include "gather_instances.hpp"
 
 #include <vrlis/gather/gather_vrls.hpp>
 

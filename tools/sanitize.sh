@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # The library's test suite under AddressSanitizer and UndefinedBehaviorSanitizer: the
-# `sanitize` preset (clang++, RelWithDebInfo, any sanitizer report is fatal; build-asan),
-# then ctest. Float division by zero is not enabled (-fsanitize=float-divide-by-zero is not
-# part of "undefined"): IEEE inf and NaN are part of the library's numerics.
+# `sanitize` preset (clang++, RelWithDebInfo with line tables only: the reports' files and
+# lines without the build time of full debug information; any sanitizer report is fatal;
+# build-asan), then ctest. Float division by zero is not enabled
+# (-fsanitize=float-divide-by-zero is not part of "undefined"): IEEE inf and NaN are part of
+# the library's numerics. Prints the build's and the tests' wall and CPU times (CI's budget:
+# .ci/run).
 # Usage: tools/sanitize.sh [ctest arguments...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/lib.sh
-build_preset sanitize
-ctest --preset sanitize -j "$(nproc)" "$@"
+TIMEFORMAT="== sanitize build: %0R s wall, %0U s user + %0S s sys"
+time build_preset sanitize
+TIMEFORMAT="== sanitize tests: %0R s wall, %0U s user + %0S s sys"
+time ctest --preset sanitize -j "$(nproc)" "$@"

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything (the `release` preset: Release, warnings as
-# errors) and runs the whole test suite with ctest.
+# errors) and runs the whole test suite with ctest. Prints the build's and the tests' wall
+# and CPU times (CI's budget: .ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/lib.sh
-build_preset release
-ctest --preset release -j "$(nproc)" "$@"
+TIMEFORMAT="== release build: %0R s wall, %0U s user + %0S s sys"
+time build_preset release
+TIMEFORMAT="== release tests: %0R s wall, %0U s user + %0S s sys"
+time ctest --preset release -j "$(nproc)" "$@"
