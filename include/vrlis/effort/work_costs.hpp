@@ -27,28 +27,28 @@ struct LaneWork {
 // On AVX2 lanes (8 floats): dispatched to, or built for.
 inline constexpr LaneWork kAvx2 = {
     {
-        {"auto", 242.5, 181.5},
-        {"cauchy-mixture", 73.6, 95.2},
-        {"cauchy-sum", 82.7, 99.1},
-        {"equiangular", 31.4, 41.2},
-        {"full-product", 78.5, 150.9},
-        {"novak", 68.1, 144.0},
+        {"auto", 297.0, 189.3},
+        {"cauchy-mixture", 66.6, 125.9},
+        {"cauchy-sum", 61.7, 143.1},
+        {"equiangular", 34.6, 43.7},
+        {"full-product", 86.5, 188.7},
+        {"novak", 73.3, 190.0},
     },
-    299.39, 52.30, 4.19, 17.93, 3.65, 7.00, 11.29, 34.19};
+    331.16, 68.88, 4.43, 18.69, 4.78, 8.79, 17.06, 53.51};
 // As built without AVX2 (x86-64's default: SSE2, 4 floats; --vrlis_lanes=built).
 inline constexpr LaneWork kBuilt = {
     {
-        {"auto", 242.5, 181.5},
-        {"cauchy-mixture", 73.6, 95.2},
-        {"cauchy-sum", 82.7, 99.1},
-        {"equiangular", 31.4, 41.2},
-        {"full-product", 78.5, 150.9},
-        {"novak", 68.1, 144.0},
+        {"auto", 383.5, 203.9},
+        {"cauchy-mixture", 113.7, 97.5},
+        {"cauchy-sum", 116.6, 128.6},
+        {"equiangular", 71.0, 70.2},
+        {"full-product", 190.4, 176.3},
+        {"novak", 164.0, 202.6},
     },
-    299.39, 52.30, 4.19, 17.93, 3.65, 7.00, 11.29, 34.19};
+    615.00, 57.83, 10.69, 41.28, 9.73, 17.71, 0.00, 7.25};
 
 // A visit of the example renderer, the default of a renderer that counts none of its own: an
 // occlusion ray and the connection around it (Work/ray/occluded/ and Work/renderer/call/).
-inline constexpr double kVisit = 66.8;
+inline constexpr double kVisit = 166.6;
 
 }  // namespace vrlis::work_costs

@@ -19,9 +19,12 @@
 
 namespace vrlis::integration {
 
-// The VRL bounds a render chooses among by default: the gathers whole, two bounds, the
-// remainder alone.
-inline const std::vector<float> kAutoBounds = {kUnbounded, 1.f, 0.1f, 0.f};
+// The VRL bounds a render chooses among by default: the gathers whole and two bounds. Not 0,
+// the path tracer: its pilot passes run without the effort control's price, which gains the
+// gathers several times their pilot's efficiency, and counted work prices a path-traced pixel
+// at a third of its time and a gathering one at three times its own
+// (docs/renderer.md#bound-choice).
+inline const std::vector<float> kAutoBounds = {kUnbounded, 1.f, 0.1f};
 
 // A pass's VRLs and gathers, its seconds (wall clock: for the driver's report, never a
 // decision) and its counted work, light and camera passes (work.hpp; the VRL renderer's).

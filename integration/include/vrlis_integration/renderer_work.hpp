@@ -6,12 +6,13 @@ namespace vrlis::integration::renderer_work {
 // Work units (vrlis/effort/work.hpp) of what the example renderer owns: one ray of the example
 // scenes' Embree geometry (Work/ray/, geometric mean over the scenes); a gather sample's
 // connection beyond the library's work and its ray (Work/renderer/call/, every gather taken
-// once: its time less what is counted, mean over the scenes); a pixel's beyond its calls and
-// rays (Work/renderer/pixel/).
-inline constexpr double kIntersect = 35.7;
-inline constexpr double kOccluded = 27.5;
-inline constexpr double kConnect = 39.3;
-inline constexpr double kPixel = 0.0;
-inline constexpr double kVertex = 0.0;
+// once: its time less what is counted, mean over the scenes); a pixel's own and a path
+// vertex's beyond its rays (Work/renderer/remainder/: path-traced pixels' time less their
+// rays, least squares over the scenes in vertices per pixel).
+inline constexpr double kIntersect = 56.6;
+inline constexpr double kOccluded = 43.1;
+inline constexpr double kConnect = 123.5;
+inline constexpr double kPixel = 658.3;
+inline constexpr double kVertex = 99.2;
 
 }  // namespace vrlis::integration::renderer_work
