@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   std::string scene_name, sampler = "auto", integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
-  std::string vrl_bound = "auto";
+  std::string vrl_bound = "scene";
   double marginal_fraction = vrlis::integration::TransportSettings{}.marginal_fraction;
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
   app.add_option("--vrl-bound", vrl_bound, "The VRL gathers take their connections up to this geometry term (1 / r^2; "
                                            "cos / r^2 at a surface), the remainder the excess; inf: the gathers take "
                                            "all; 0: no light paths, a path tracer; scene: the scene's (1 in corner, "
-                                           "inf elsewhere); auto: inf, 1, 0.1 or 0, whichever the first two passes "
+                                           "inf elsewhere); auto: inf, 1 or 0.1, whichever the first two passes "
                                            "price lowest (docs/renderer.md#bound-choice)")
       ->capture_default_str();
   app.add_flag("--no-jitter", no_jitter, "Sample every pixel through its centre");

@@ -2,8 +2,8 @@
 # The VRL renderer's defaults against its own path tracer at equal time, per scene with a
 # medium and surfaces (docs/renderer.md#bound-choice): bench/compare/vs_path.py over
 # vrl_render, one thread, 48 x 48. --publish writes docs/compare/vs_path.md.
-#   tools/vs_path.sh [--publish] [vs_path.py options: --seconds S --pairs P --scenes a,b]
-#   (defaults: 4 s per render, 4 pairs: ~11 minutes)
+#   tools/vs_path.sh [--publish] [vs_path.py options: --seconds S --pairs P --scenes a,b --vrl-args A]
+#   (defaults: 4 s per render, 4 pairs: ~6 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/lib.sh
