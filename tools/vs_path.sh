@@ -20,7 +20,7 @@ if [ -n "$publish" ]; then
   {
     echo "# The VRL renderer against its own path tracer at equal time"
     echo
-    echo "Generated $(date -u +%F) on $(uname -m), $(nproc) cores, by \`tools/vs_path.sh --publish ${args[*]}\`."
+    echo "Generated $(date -u +%F) on $(uname -m), $(nproc) cores, by \`tools/vs_path.sh --publish${args[*]:+ ${args[*]}}\`."
     echo "Efficiency of \`vrl_render\`'s defaults over \`--integrator path\` at the same wall time, one thread,"
     echo "48 x 48: the path tracer's per-pixel variance over the VRL renderer's, each from the RMSE between"
     echo "two seeds' renders, pooled over seed pairs ([../renderer.md](../renderer.md#bound-choice))."

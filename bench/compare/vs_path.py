@@ -59,7 +59,8 @@ def main():
                     s = render(args.vrl_render, scene, integrator, seed, args, exr, first if seed != 2 * k + 1 else None)
                     passes[integrator].append(s["passes"])
                     if integrator == "vrl":
-                        bounds.append(s["vrl_bound"])
+                        b = s["vrl_bound"]
+                        bounds.append(b if isinstance(b, str) else f"{b:g}")
                     if "rmse" in s:
                         per[integrator].append(s["rmse"] ** 2 / 2)
         mv, mp = statistics.fmean(per["vrl"]), statistics.fmean(per["path"])
@@ -67,7 +68,7 @@ def main():
         se = math.sqrt(statistics.variance(per["vrl"]) / (args.pairs * mv * mv)
                        + statistics.variance(per["path"]) / (args.pairs * mp * mp))
         rows.append({"scene": scene, "ratio": ratio, "low": ratio * math.exp(-1.96 * se),
-                     "high": ratio * math.exp(1.96 * se), "bounds": sorted(set(map(str, bounds))),
+                     "high": ratio * math.exp(1.96 * se), "bounds": sorted(set(bounds)),
                      "passes_vrl": statistics.median(passes["vrl"]), "passes_path": statistics.median(passes["path"])})
         print(f"{scene:8s} VRL / path {ratio:6.2f} ({rows[-1]['low']:.2f}-{rows[-1]['high']:.2f})  "
               f"bound {','.join(rows[-1]['bounds'])}  passes {rows[-1]['passes_vrl']:.0f} vs {rows[-1]['passes_path']:.0f}",
