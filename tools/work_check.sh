@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # How far counted work (docs/maths.md#effort-work) sits from measured time: vrl_render with its
-# defaults on every scene, one thread, and the camera passes' counted work (in nanoseconds of
-# the machine tools/work_costs.sh measured) over the passes' measured seconds (light passes
-# included). A ratio of 1 is a model exact in scale; what the price needs is the same ratio
+# defaults on every scene, one thread, and the passes' counted work, light and camera (in
+# nanoseconds of the machine tools/work_costs.sh measured), over their measured seconds. A ratio of 1 is a model exact in scale; what the price needs is the same ratio
 # across a scene's operations, so the spread between scenes is the figure to read.
 #   tools/work_check.sh [vrl_render arguments, e.g. --effort off]
 set -euo pipefail
