@@ -115,7 +115,7 @@ void Remainder(benchmark::State& state, const char* name) {
   settings.width = settings.height = 32;
   settings.transport = built->transport;
   settings.transport.effort.on = false;
-  settings.vrl_bounds = {0.f};
+  settings.transport.vrl_bound = 0;
   VrlRenderer renderer(built->scene, settings);
   // One thread: the benchmark's rate is of its own thread's time.
   tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);

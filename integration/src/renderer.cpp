@@ -55,9 +55,9 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   auto t0 = std::chrono::steady_clock::now();
   // Without a medium there are no light paths, and no VPLs to share the remainder's
   // connections with: the remainder then carries them all.
-  // A pixel whose bound choice is 0 is the path tracer's, and takes no light paths.
-  const bool light_paths =
-      scene_.medium.Present() && !scene_.lights.Powers().empty() && (!bounds_.active() || bounds_.LightPaths());
+  // A pixel whose VRL bound is 0 is the path tracer's, and takes no light paths.
+  const bool light_paths = scene_.medium.Present() && !scene_.lights.Powers().empty() &&
+                           (bounds_.active() ? bounds_.LightPaths() : settings_.transport.vrl_bound > 0);
   TransportSettings transport = settings_.transport;
   if (!light_paths) transport.vpl_bound = 0;
   std::vector<Vpl> traced;

@@ -98,7 +98,7 @@ TEST_CASE("BoundChoice: a render that chooses keeps the image's mean; one that r
   const vi::RenderSettings whole_settings = CloudSettings(*built);
   vi::RenderSettings choosing_settings = whole_settings, traced_settings = whole_settings;
   choosing_settings.vrl_bounds = vi::kAutoBounds;
-  traced_settings.vrl_bounds = {0.f};
+  traced_settings.transport.vrl_bound = 0;
   vi::VrlRenderer whole(built->scene, whole_settings), choosing(built->scene, choosing_settings);
   DarkerOfTwo sabotage(built->scene, whole_settings, traced_settings);
   const int block = 12, passes = 600;
