@@ -95,7 +95,7 @@ double Rmse(const vrlis::integration::Film& a, const vrlis::integration::Film& b
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scene_name, sampler = "auto", integrator = "vrl", gather = "all", out = "render.exr", reference;
+  std::string scene_name, sampler = vrlis::Name(vrlis::GatherSamplers{}), integrator = "vrl", gather = "all", out = "render.exr", reference;
   std::optional<float> g, sigma_s, sigma_a, exposure;
   float vpl_bound = vrlis::integration::TransportSettings{}.vpl_bound;
   std::string vrl_bound = "scene";
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   int width = 256, height = 256, spp = 16, vrls = 64, threads = 0;
   double seconds = 0;
   std::uint64_t seed = 1, dump_every = 1000;
-  std::string dump_queries, effort = "on", pixel_samples = "stratified";
+  std::string dump_queries, effort = vrlis::integration::TransportSettings{}.effort.on ? "on" : "off", pixel_samples = "stratified";
   bool no_jitter = false, no_caustics = false, quiet = false, json = false;
 
   CLI::App app{"Render a comparison scene with virtual ray lights (vrlis). Writes OUT (linear float RGB "
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
   app.add_option("--vrls", vrls, "Light paths per pass")->capture_default_str();
   app.add_option("--effort", effort, "on: Russian roulette and splitting of every VRL gather by a price of variance "
                                      "learned from earlier passes, and with auto both steps' models by it "
-                                     "(docs/maths.md#effort); off: every VRL gathered once, images reproducible")
+                                     "(docs/maths.md#effort); off: every VRL gathered once")
       ->capture_default_str();
   app.add_option("--marginal-fraction", marginal_fraction,
                  "With +marginal: the share of the medium-to-medium gathers, those of the largest predicted second "

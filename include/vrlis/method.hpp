@@ -38,9 +38,12 @@ inline std::optional<SegmentChoice> ParseSegmentSampler(std::string_view name) {
 
 // The samplers of a whole render: step one on the VRL, the segment sampler for every other
 // step. Named "segment" (step one VrlPoint, as Novák et al.) or "segment+vrl", e.g. "novak",
-// "full-product+marginal".
+// "full-product+marginal". Default-constructed, the one default of the library, the
+// integration layer and vrl_render: `auto` with VrlPoint, meant with the effort control
+// (effort/price.hpp), with which its efficiency lies below the best fixed sampler's in no
+// measured scene (docs/renderer.md#effort).
 struct GatherSamplers {
-  SegmentChoice segment{};
+  SegmentChoice segment = SegmentSamplers::Of<AutoEntry>();
   VrlChoice vrl{};
   friend bool operator==(GatherSamplers a, GatherSamplers b) { return a.segment == b.segment && a.vrl == b.vrl; }
 };

@@ -36,7 +36,7 @@ struct Setup {
   vrlis::Medium<Real> medium = vrlis::Medium<Real>::FromScatteringExtinction(Real(0.3), Real(0.5), Real(0.8));
   std::vector<vrlis::VrlSegment<Real>> vrls;
   std::vector<Real> weights;
-  vrlis::GatherSamplers method{};
+  vrlis::GatherSamplers method = vrlis::FixedSamplers<vrlis::EquiangularEntry>{};
 };
 
 Setup MakeSetup() {

@@ -16,6 +16,7 @@
 #include <vrlis_scenes/scenes.hpp>
 
 #include "block_stats.hpp"
+#include "uncontrolled.hpp"
 
 namespace {
 
@@ -86,7 +87,7 @@ vi::RenderSettings CloudSettings(const vrlis::scenes::BuiltScene& built) {
   vi::RenderSettings s;
   s.width = s.height = 24;
   s.vrls_per_pass = 16;
-  s.transport = built.transport;
+  s.transport = vrlis::test::Uncontrolled(built.transport);
   s.transport.vrl_bound = vi::kUnbounded;
   return s;
 }

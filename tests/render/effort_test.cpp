@@ -50,6 +50,7 @@
 #include <vrlis_scenes/scenes.hpp>
 
 #include "block_stats.hpp"
+#include "uncontrolled.hpp"
 
 namespace {
 
@@ -57,7 +58,7 @@ vrlis::integration::RenderSettings Settings(const vrlis::scenes::BuiltScene& bui
   vrlis::integration::RenderSettings s;
   s.width = s.height = size;
   s.vrls_per_pass = 32;
-  s.transport = built.transport;
+  s.transport = vrlis::test::Uncontrolled(built.transport);
   s.transport.effort.on = effort;
   return s;
 }

@@ -12,6 +12,7 @@
 
 #include "block_stats.hpp"
 #include "stats.hpp"  // tests/support: Pearson's chi-square
+#include "uncontrolled.hpp"
 
 namespace {
 
@@ -82,8 +83,7 @@ TEST_CASE("stratified pixel samples: room unbiased, lower error at the stripes' 
   vrlis::integration::RenderSettings s;
   s.width = s.height = 32;
   s.vrls_per_pass = 4;
-  s.transport = built->transport;
-  s.transport.effort.on = false;
+  s.transport = vrlis::test::Uncontrolled(built->transport);
   const int block = 8, direct_passes = 2048, passes = 128, reference_passes = 512;
   // The mean image of n passes, and the mean of each block with its standard error.
   auto render = [&](vrlis::integration::PixelSamples kind, std::uint64_t seed, int n, vrlis::test::BlockEstimate* blocks) {
@@ -125,8 +125,7 @@ TEST_CASE("stratified pixel samples: room unbiased, lower error at the stripes' 
   std::printf("[render] room direct light, control x1.10: %s\n", zc.Describe().c_str());
   CHECK_FALSE(zc.Pass());
 
-  s.transport = built->transport;
-  s.transport.effort.on = false;
+  s.transport = vrlis::test::Uncontrolled(built->transport);
   const vrlis::integration::Film independent = render(PixelSamples::Independent, 1, passes, nullptr);
   const vrlis::integration::Film stratified = render(PixelSamples::Stratified, 1, passes, nullptr);
   const vrlis::integration::Film reference = render(PixelSamples::Independent, 2, reference_passes, nullptr);

@@ -13,6 +13,7 @@
 #include <vrlis_scenes/scenes.hpp>
 
 #include "block_stats.hpp"
+#include "uncontrolled.hpp"
 
 namespace {
 
@@ -72,7 +73,7 @@ TEST_CASE("VPLs and the remainder share surface-to-surface light without bias", 
   RenderSettings base;
   base.width = base.height = 32;
   base.vrls_per_pass = 32;
-  base.transport = built->transport;
+  base.transport = vrlis::test::Uncontrolled(built->transport);
   base.transport.light_caustics = false;  // caustic light paths make no VPLs anyway: fewer wasted paths
   const float bound = 0.1f;  // near the scene's typical geometry terms: the remainder's share is large
   const int block = 16, passes = 600;
@@ -101,7 +102,7 @@ TEST_CASE("VRL gathers and the remainder share medium connections without bias",
   RenderSettings base;
   base.width = base.height = 24;
   base.vrls_per_pass = 16;
-  base.transport = built->transport;
+  base.transport = vrlis::test::Uncontrolled(built->transport);
   const float bound = 1;  // connections shorter than 1: most of the dense cloud's
   const float none = vi::kUnbounded;
   const int block = 12, passes = 1000;

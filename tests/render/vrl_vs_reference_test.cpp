@@ -8,6 +8,7 @@
 #include <vrlis_scenes/scenes.hpp>
 
 #include "block_stats.hpp"
+#include "uncontrolled.hpp"
 
 namespace {
 
@@ -25,7 +26,7 @@ void Run(const Case& c) {
   vrlis::integration::RenderSettings s;
   s.width = s.height = c.size;
   s.vrls_per_pass = c.vrls;
-  s.transport = built->transport;
+  s.transport = vrlis::test::Uncontrolled(built->transport);
   s.transport.sampling.segment = c.method;
   s.transport.light_caustics = false;  // the path tracer cannot sample L S+ paths from point lights
   const int block = c.block;

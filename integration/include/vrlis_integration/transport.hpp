@@ -14,7 +14,7 @@ class WeightLog;
 struct TransportSettings {
   // How every VRL gather samples: step one and step two of the medium-to-medium gather; the
   // medium-to-surface gather and single scattering use its camera sampler.
-  vrlis::GatherSamplers sampling{vrlis::SegmentSamplers::Of<vrlis::NovakEntry>(), {}};
+  vrlis::GatherSamplers sampling;
   bool medium_to_medium = true;   // VRL gather along camera segments
   bool medium_to_surface = true;  // VRL gather at the diffuse surface ending the camera chain
   bool direct = true;             // next-event estimation at the first camera vertex
@@ -49,9 +49,9 @@ struct TransportSettings {
   int rr_depth = 3;                 // Russian roulette from this depth on
   QueryLog* query_log = nullptr;    // if set, records a sample of the medium-to-medium gathers
   WeightLog* weight_log = nullptr;  // if set, records the weights of every VRL gather sample taken
-  // The effort control of both VRL gathers (off: every VRL gathered once); its price is the
-  // renderer's, learned pass by pass (vrlis/effort/price.hpp).
-  vrlis::EffortSettings effort;
+  // The effort control of both VRL gathers, on with the default samplers (off: every VRL
+  // gathered once); its price is the renderer's, learned pass by pass (vrlis/effort/price.hpp).
+  vrlis::EffortSettings effort{true};
   // With VrlMarginal as step one: the share of the medium-to-medium gathers, those of the
   // largest predicted second moments, that take its fit; the rest take VrlPoint's density.
   // The renderer sets effort.marginal_threshold to it pass by pass from the scores of the
