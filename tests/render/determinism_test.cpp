@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -49,12 +50,13 @@ TEST_CASE("an image does not depend on the thread count, and does on the seed", 
 
 namespace {
 
-// The bytes of the EXR vrl_render writes for these arguments (empty if it failed).
-std::string RenderFile(const std::string& args) {
+// The bytes of the file with extension `ext` (the EXR, or the JSON summary) vrl_render writes
+// for these arguments (empty if it failed).
+std::string RenderFile(const std::string& args, const char* ext = ".exr") {
   const std::string stem = "determinism_" + std::to_string(getpid());
   const std::string cmd = std::string(VRL_RENDER) + " --quiet " + args + " --out " + stem + ".exr";
   if (std::system(cmd.c_str()) != 0) return {};
-  std::ifstream in(stem + ".exr", std::ios::binary);
+  std::ifstream in(stem + ext, std::ios::binary);
   std::stringstream bytes;
   bytes << in.rdbuf();
   for (const char* ext : {".exr", ".png", ".json"}) std::remove((stem + ext).c_str());
@@ -74,4 +76,15 @@ TEST_CASE("vrl_render's defaults, the effort control on, give the same file at 1
     CHECK(RenderFile(args + " --threads 0") == one);
     CHECK(RenderFile("--scene " + std::string(name) + " --width 16 --height 16 --spp 6 --seed 4 --threads 1") != one);
   }
+}
+
+TEST_CASE("one default: the library's samplers are the integration layer's and vrl_render's", "[render][default]") {
+  const vrlis::integration::TransportSettings transport;
+  CHECK(transport.sampling == vrlis::GatherSamplers{});
+  CHECK(transport.effort.on);
+  std::string summary = RenderFile("--scene room --width 4 --height 4 --spp 1", ".json");
+  summary.erase(std::remove(summary.begin(), summary.end(), ' '), summary.end());
+  INFO(summary);
+  CHECK(summary.find("\"sampler\":\"" + vrlis::Name(vrlis::GatherSamplers{}) + "\"") != std::string::npos);
+  CHECK(summary.find("\"effort\":\"on\"") != std::string::npos);
 }
