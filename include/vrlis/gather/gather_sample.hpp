@@ -4,6 +4,7 @@
 // occlusion ray between camera_point and light_point and multiplies.
 #include <limits>
 
+#include "../angle/angle_domain.hpp"
 #include "../core/gather_query.hpp"
 #include "../core/lane_math.hpp"
 
@@ -77,19 +78,18 @@ namespace detail {
 template <bool kLanes = false, typename Real>
 Real FiniteOrZero(Real x) { return Pick<kLanes>((x > 0) & (x < std::numeric_limits<Real>::infinity()), x, Real(0)); }
 
-// GatherSample::over_equiangular of the sample s drawn by `sampler` (a SegmentSampler):
+// GatherSample::over_equiangular of the sample s drawn on `domain` (its sampler's):
 // equiangular sampling's density is uniform in the angle, 1 / width.
-template <typename Sampler, typename Real>
-Real OverEquiangular(const Sampler& sampler, SegmentSample<Real> s) {
-  const Real uniform = sampler.domain().dtheta_dt(s.t) / sampler.domain().width();
+template <typename Real>
+Real OverEquiangular(const AngleDomain<Real>& domain, SegmentSample<Real> s) {
+  const Real uniform = domain.dtheta_dt(s.t) / domain.width();
   return FiniteOrZero(s.pdf / uniform);
 }
 
-// The same over the density of `Other` (an angle distribution) fitted to the sampler's query
-// q on its domain: the two share the angle's Jacobian.
-template <typename Other, typename Sampler, typename Real>
-Real OverDensity(const Sampler& sampler, const SegmentQuery<Real>& q, SegmentSample<Real> s) {
-  const auto& domain = sampler.domain();
+// The same over the density of `Other` (an angle distribution) fitted to the query q on its
+// domain: the two share the angle's Jacobian.
+template <typename Other, typename Real>
+Real OverDensity(const AngleDomain<Real>& domain, const SegmentQuery<Real>& q, SegmentSample<Real> s) {
   return FiniteOrZero(s.pdf / (Other(q, domain).pdf(domain.offset_at(s.t)) * domain.dtheta_dt(s.t)));
 }
 

@@ -125,7 +125,8 @@ struct FitsInLanes<SegmentSampler<D>, std::void_t<typename D::template TargetLan
 // one-at-a-time numbers (lane_math.hpp); so do the fits of every sampler whose distribution
 // has a form in lanes (FitsInLanes: Novák's and FullProduct's, their closed-form inversions
 // one gather at a time; the Cauchy samplers' fits and inversions, their sines one gather at a
-// time), the others' one gather at a time. One
+// time; `auto`'s rule one gather at a time, then each model's fits in lanes of their own),
+// the others' one gather at a time. One
 // gather is a long chain of dependent operations and one vector of lanes is still one chain;
 // the gathers of a phase are independent, and several vectors of them let the processor
 // overlap their chains (lanes over 8 gathers at a time gained 10%, over 32 a factor 2 for
@@ -156,27 +157,43 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     AngleFrameLanes<Real, kSize> frames;
     for (int i = 0; i < lanes; ++i)
       frames.set(i, ReduceToAngles<true>(vrl[i].at(vt[i]), camera.origin, camera.dir, camera.tmin, camera.tmax));
+    constexpr bool kAuto = std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>;
     // One-at-a-time fits, none where step one sampled nothing (a sampler fitted in lanes
     // needs none; their frame kept GCC from inlining the lanes' finish).
-    std::optional<CameraSampler> fit[FitsInLanes<CameraSampler>::value ? 1 : kSize];
+    std::optional<CameraSampler> fit[FitsInLanes<CameraSampler>::value || kAuto ? 1 : kSize];
     auto step_query = [&](int i) {
       MediumGatherQuery<Real> q{camera, vrls[first + i], medium};
       return CameraStepQuery(q, q.vrl.at(v[i].t));
     };
     Real delta[kSize] = {}, pdf_delta[kSize] = {};  // pdf 0: nothing sampled
-    if constexpr (FitsInLanes<CameraSampler>::value) {
-      using Fit = typename FitsInLanes<CameraSampler>::Fit;
-      typename Fit::template TargetLanes<kSize> targets;
-      targets.template build<Accuracy::Fit>(frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g, medium.sigma_t, lanes);
-      Real u[kSize];
-      for (int i = 0; i < lanes; ++i) u[i] = u_camera[first + (i < n ? i : 0)];
-      SegmentSample<Real> d[kSize];
-      Fit::template SampleLanes<kSize>(targets, u, lanes, d);
-      // Where SegmentSampler samples nothing (sample_offset).
+    Real u[kSize];
+    for (int i = 0; i < lanes; ++i) u[i] = u_camera[first + (i < n ? i : 0)];
+    // The lanes' samples, except where SegmentSampler samples nothing (sample_offset).
+    auto take = [&](const SegmentSample<Real>* d) {
       const bool representable = RepresentableLength(camera.tmax - camera.tmin);
       for (int i = 0; i < n; ++i)
         if (detail::Usable(v[i]) && frames.width[i] >= std::numeric_limits<Real>::min() && representable)
           delta[i] = d[i].t, pdf_delta[i] = d[i].pdf;
+    };
+    if constexpr (FitsInLanes<CameraSampler>::value) {
+      using Fit = typename FitsInLanes<CameraSampler>::Fit;
+      typename Fit::template TargetLanes<kSize> targets;
+      targets.template build<Accuracy::Fit>(frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g, medium.sigma_t, lanes);
+      SegmentSample<Real> d[kSize];
+      Fit::template SampleLanes<kSize>(targets, u, lanes, d);
+      take(d);
+    } else if constexpr (kAuto) {
+      AutoModel models[kSize];
+      for (int i = 0; i < lanes; ++i) models[i] = AutoModel::Equiangular;  // (where nothing is sampled)
+      for (int i = 0; i < n; ++i)
+        if (detail::Usable(v[i])) {
+          const SegmentQuery<Real> q = step_query(i);
+          models[i] = AutoAngle<Real>::Choose(q, AngleDomain<Real>(q, frames[i]));
+        }
+      SegmentSample<Real> d[kSize];
+      AutoAngle<Real>::template SampleLanes<kSize>(models, frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g,
+                                                   medium.sigma_t, u, lanes, d);
+      take(d);
     } else {
       for (int i = 0; i < n; ++i)
         if (detail::Usable(v[i])) {
@@ -201,11 +218,13 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     for (int i = 0; i < n; ++i) {
       GatherSample<Real>& g = out[first + i];
       g = usable[i] ? samples[i] : GatherSample<Real>{};
-      if constexpr (std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>) {  // over the drawn sample's density
+      if constexpr (kAuto) {  // over the drawn sample's density
+        if (!g.contributes()) continue;
         const SegmentSample<Real> t{g.t, g.pdf_t};
-        if (g.contributes()) g.over_equiangular = detail::OverEquiangular(*fit[i], t);
-        if (g.contributes() && measure_mixture)
-          g.over_mixture = detail::OverDensity<CauchyMixtureAngle<Real>>(*fit[i], step_query(i), t);
+        const SegmentQuery<Real> q = step_query(i);
+        const AngleDomain<Real> domain(q, frames[i]);
+        g.over_equiangular = detail::OverEquiangular(domain, t);
+        if (measure_mixture) g.over_mixture = detail::OverDensity<CauchyMixtureAngle<Real>>(domain, q, t);
       }
     }
   }

@@ -87,10 +87,10 @@ template <typename Sampler, typename Real>
     for (int i = 0; i < n; ++i) {
       v[i] = fit[fit_of[i]]->sample_pdf(u[first + i]);
       if constexpr (std::is_same_v<Sampler, AutoEntry::Sampler<Real>>) {
-        over[i] = detail::OverEquiangular(*fit[fit_of[i]], v[i]);
+        over[i] = detail::OverEquiangular(fit[fit_of[i]]->domain(), v[i]);
         if (measure_mixture)
           over_mixture[i] = detail::OverDensity<CauchyMixtureAngle<Real>>(
-              *fit[fit_of[i]], VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}), v[i]);
+              fit[fit_of[i]]->domain(), VrlStepQuery(SurfaceGatherQuery<Real>{point, normal, vrls[first + i], medium}), v[i]);
       }
     }
     for (int i = 0; i < n; ++i) {

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -25,6 +26,7 @@
 #include "equiangular.hpp"
 #include "full_product.hpp"
 #include "novak.hpp"
+#include "vrl_point.hpp"
 
 namespace vrlis {
 
@@ -217,6 +219,37 @@ class AutoAngle {
 
   AutoAngle(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) : dist_(Make(q, dom)) {}
 
+  // The rule: first the two early-outs, which need no lobe evaluated, then the exact ratios;
+  // *phase receives the phase product built for them (the one Novák's fit uses), if any.
+  static AutoModel Choose(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom,
+                          std::optional<PhaseProduct<Real>>* phase = nullptr) {
+    double ratio = double(TransmittanceRangeRatio(q)), moment = TransmittanceMoment(q, dom, ratio);
+    double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
+                   : q.lobe.kind == LobeKind::None          ? 1.0
+                                                            : std::numeric_limits<double>::infinity();
+    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point, ratio, moment))
+      return AutoModel::Equiangular;
+    if (AutoRule::FullProductSuffices(moment)) return AutoModel::FullProduct;
+    std::optional<PhaseProduct<Real>> own;
+    const PhaseProduct<Real>& built = (phase ? *phase : own).emplace(q, dom);
+    return AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, built, ratio, moment), moment));
+  }
+
+  // A batch's camera steps in vector lanes (the medium gathers', as the fits' SampleLanes):
+  // lane i took models[i] (Choose, one query at a time: the rule branches); each fitted model's
+  // lanes are gathered into a batch of their own and fitted and sampled in lanes. out[i] is
+  // sample_pdf(u[i]) of lane i's query, to rounding.
+  template <int kSize>
+  static void SampleLanes(const AutoModel* models, const detail::AngleFrameLanes<Real, kSize>& frames,
+                          const Real* axis_x, const Real* axis_y, const Real* axis_z, Vec3<Real> dir, Real g,
+                          Real sigma_t, const Real* u, int lanes, SegmentSample<Real>* out) {
+    for (int i = 0; i < lanes; ++i)
+      if (models[i] == AutoModel::Equiangular) out[i] = {u[i] * frames.width[i], 1 / frames.width[i]};
+    const ModelLanes<kSize> batch{models, frames, axis_x, axis_y, axis_z, dir, g, sigma_t, u, lanes};
+    batch.template Sample<NovakFit>(AutoModel::Novak, out);
+    batch.template Sample<FullFit>(AutoModel::FullProduct, out);
+  }
+
   AutoModel model() const { return AutoModel(dist_.index()); }
   Real sample(Real u) const { return std::visit([&](const auto& d) { return d.sample(u); }, dist_); }
   Real pdf(Real delta) const { return std::visit([&](const auto& d) { return d.pdf(delta); }, dist_); }
@@ -228,24 +261,50 @@ class AutoAngle {
  private:
   using Dist = std::variant<UniformAngle<Real>, NovakFit, FullFit>;  // in AutoModel's order
 
-  // The rule: first the two early-outs, which need no lobe evaluated, then the exact ratios;
-  // the phase product built for them is the one Novák's fit uses.
   static Dist Make(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
-    double ratio = double(TransmittanceRangeRatio(q)), moment = TransmittanceMoment(q, dom, ratio);
-    double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
-                   : q.lobe.kind == LobeKind::None          ? 1.0
-                                                            : std::numeric_limits<double>::infinity();
-    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point, ratio, moment))
-      return Dist(std::in_place_index<0>, q, dom);
-    if (AutoRule::FullProductSuffices(moment)) return Dist(std::in_place_index<2>, q, dom);
-    PhaseProduct<Real> phase(q, dom);
-    switch (AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, phase, ratio, moment), moment))) {
-      case AutoModel::Novak: return Dist(std::in_place_index<1>, phase, dom.width());
+    std::optional<PhaseProduct<Real>> phase;
+    switch (Choose(q, dom, &phase)) {
+      case AutoModel::Novak: return Dist(std::in_place_index<1>, *phase, dom.width());
       case AutoModel::FullProduct: return Dist(std::in_place_index<2>, q, dom);
       case AutoModel::Equiangular: break;
     }
     return Dist(std::in_place_index<0>, q, dom);
   }
+
+  // The lanes of a batch (SampleLanes) and what their fits are built from.
+  template <int kSize>
+  struct ModelLanes {
+    const AutoModel* models;
+    const detail::AngleFrameLanes<Real, kSize>& frames;
+    const Real *axis_x, *axis_y, *axis_z;
+    Vec3<Real> dir;
+    Real g, sigma_t;
+    const Real* u;
+    int lanes;
+
+    // The lanes that took `model`, fitted and sampled by Fit's SampleLanes (the unused lanes
+    // of the gathered batch repeat its first).
+    template <typename Fit>
+    void Sample(AutoModel model, SegmentSample<Real>* out) const {
+      int index[kSize], taken = 0;
+      for (int i = 0; i < lanes; ++i)
+        if (models[i] == model) index[taken++] = i;
+      if (taken == 0) return;
+      const int whole = detail::WholeLanes(taken);
+      detail::AngleFrameLanes<Real, kSize> gathered;
+      Real x[kSize], y[kSize], z[kSize], v[kSize];
+      for (int j = 0; j < whole; ++j) {
+        const int i = index[j < taken ? j : 0];
+        gathered.set(j, frames[i]);
+        x[j] = axis_x[i], y[j] = axis_y[i], z[j] = axis_z[i], v[j] = u[i];
+      }
+      typename Fit::template TargetLanes<kSize> target;
+      target.template build<Accuracy::Fit>(gathered, x, y, z, dir, g, sigma_t, whole);
+      SegmentSample<Real> d[kSize];
+      Fit::template SampleLanes<kSize>(target, v, whole, d);
+      for (int j = 0; j < taken; ++j) out[index[j]] = d[j];
+    }
+  };
 
   Dist dist_;
 };
