@@ -21,12 +21,17 @@
 // pdf). docs/bench.md (section "Cost of one gather") puts these together with a profile of
 // vrl_render (occlusion ray, random numbers, bookkeeping).
 #include "bench_common.hpp"
-#include "gather_instances.hpp"
 
+#include <vrlis/gather/gather_instances.hpp>
 #include <vrlis/gather/medium_gather.hpp>
 #include <vrlis/gather/surface_gather.hpp>
 
 #include <vector>
+
+// Every sampler pair's batches, compiled once: in float in vrlis::integration, in double
+// for GatherBatchDouble (CMakeLists.txt).
+VRLIS_EXTERN_GATHERS(float)
+VRLIS_EXTERN_GATHERS(double)
 
 namespace vrlis::bench {
 namespace {

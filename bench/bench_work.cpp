@@ -10,11 +10,14 @@
 //   Work/mixture-density   GatherBatch of `auto` with its samples' density over the mixture
 //                          (measure_mixture), over the same without it, per sample
 #include "bench_common.hpp"
-#include "gather_instances.hpp"
 
+#include <vrlis/gather/gather_instances.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
 
 #include <vector>
+
+// Every sampler pair's batches, compiled once in vrlis::integration (its CMakeLists.txt).
+VRLIS_EXTERN_GATHERS(float)
 
 namespace vrlis::bench {
 namespace {

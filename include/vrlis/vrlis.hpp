@@ -28,6 +28,7 @@
 #include "effort/call.hpp"
 #include "effort/price.hpp"
 #include "gather/gather_vrls.hpp"
+#include "gather/gather_instances.hpp"
 #include "xyz.hpp"
 
 namespace vrlis {

@@ -1,12 +1,16 @@
 #include "vrlis_integration/gather.hpp"
 
 #include <vrlis/core/two_point_direction.hpp>
+#include <vrlis/gather/gather_instances.hpp>
 #include <vrlis/gather/gather_vrls.hpp>
 #include <vrlis/gather/medium_gather.hpp>
 #include <vrlis/gather/point_light_gather.hpp>
 #include <vrlis/samplers/equiangular.hpp>
 
 #include "vrlis_integration/work.hpp"
+
+// Every sampler pair's batches, compiled once into this library (integration/CMakeLists.txt).
+VRLIS_EXTERN_GATHERS(float)
 
 namespace vrlis::integration {
 

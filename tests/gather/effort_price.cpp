@@ -20,7 +20,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "gather_instances.hpp"
+#include <vrlis/gather/gather_instances.hpp>
+
+// Every sampler pair's batches, compiled once for the suite (tests/gather/CMakeLists.txt).
+VRLIS_EXTERN_GATHERS(float)
+VRLIS_EXTERN_GATHERS(double)
 
 namespace {
 

@@ -6,7 +6,10 @@
 
 #include <limits>
 
-#include "gather_instances.hpp"
+#include <vrlis/gather/gather_instances.hpp>
+
+// Every sampler pair's batches, compiled once for the suite (tests/gather/CMakeLists.txt).
+VRLIS_EXTERN_GATHERS(float)
 
 namespace {
 
