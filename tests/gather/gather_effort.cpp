@@ -25,11 +25,7 @@
 #include <random>
 #include <vector>
 
-#include <vrlis/gather/gather_instances.hpp>
-
-// Every sampler pair's batches, compiled once for the suite (tests/gather/CMakeLists.txt).
-VRLIS_EXTERN_GATHERS(float)
-VRLIS_EXTERN_GATHERS(double)
+#include "extern_gathers.hpp"
 
 namespace {
 

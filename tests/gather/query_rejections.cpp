@@ -6,10 +6,7 @@
 
 #include <limits>
 
-#include <vrlis/gather/gather_instances.hpp>
-
-// Every sampler pair's batches, compiled once for the suite (tests/gather/CMakeLists.txt).
-VRLIS_EXTERN_GATHERS(float)
+#include "extern_gathers.hpp"
 
 namespace {
 

@@ -244,7 +244,7 @@ class AutoAngle {
                           const Real* axis_x, const Real* axis_y, const Real* axis_z, Vec3<Real> dir, Real g,
                           Real sigma_t, const Real* u, int lanes, SegmentSample<Real>* out) {
     for (int i = 0; i < lanes; ++i)
-      if (models[i] == AutoModel::Equiangular) out[i] = {u[i] * frames.width[i], 1 / frames.width[i]};
+      if (models[i] == AutoModel::Equiangular) out[i] = UniformAngle<Real>(frames.width[i]).sample_pdf(u[i]);
     const ModelLanes<kSize> batch{models, frames, axis_x, axis_y, axis_z, dir, g, sigma_t, u, lanes};
     batch.template Sample<NovakFit>(AutoModel::Novak, out);
     batch.template Sample<FullFit>(AutoModel::FullProduct, out);

@@ -11,7 +11,8 @@ template <typename R>
 class UniformAngle {
  public:
   using Real = R;
-  UniformAngle(const SegmentQuery<Real>&, const AngleDomain<Real>& dom) : width_(dom.width()) {}
+  UniformAngle(const SegmentQuery<Real>&, const AngleDomain<Real>& dom) : UniformAngle(dom.width()) {}
+  explicit UniformAngle(Real width) : width_(width) {}
   Real sample(Real u) const { return u * width_; }
   Real pdf(Real) const { return 1 / width_; }
   Real cdf(Real delta) const { return delta / width_; }
