@@ -88,6 +88,13 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     TransportSettings pixel_transport = transport;
     if (bounds_.active()) pixel_transport.vrl_bound = bounds_.Bound(x, y);
     const bool path_traced = pixel_transport.vrl_bound == 0;  // the path tracer's pixel: no light paths
+    if (path_traced) {
+      // No gathers: none of the effort control's per-pixel settings, which cost about a
+      // path-traced pixel's own time again.
+      WorkScope scope(&pixel_work[i]);
+      ThreadWork() += renderer_work::kPixel;
+      return path_tracer.Li(ray, rng);
+    }
     GatherOptions options;
     options.query_log = transport.query_log, options.weight_log = transport.weight_log;
     options.bound = pixel_transport.vrl_bound;
@@ -111,7 +118,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     {
       WorkScope scope(&pixel_work[i]);  // the pixel's own, from zero, whatever its thread did before
       ThreadWork() += renderer_work::kPixel;
-      L = path_traced ? path_tracer.Li(ray, rng) : VrlRadiance(scene_, pixel_transport, vrls, vpls, ray, rng, options);
+      L = VrlRadiance(scene_, pixel_transport, vrls, vpls, ray, rng, options);
     }
     const vrlis::PixelRecord& record = *options.effort.record;
     gather_work[i] = record.medium.work + record.surface.work;
