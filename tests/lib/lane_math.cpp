@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 
 TEST_CASE("SinCosLanes<float> is within 2 ulp of 1, and relative near 0", "[lib][lane_math]") {
   const double ulp = std::numeric_limits<float>::epsilon();
@@ -25,6 +26,43 @@ TEST_CASE("SinCosLanes<float> is within 2 ulp of 1, and relative near 0", "[lib]
   CHECK(worst_abs <= 2 * ulp);
   CHECK(worst_rel <= 2 * ulp);
   CHECK(std::isnan(vrlis::SinCosLanes(std::numeric_limits<float>::quiet_NaN()).sin));
+}
+
+// The Cauchy samplers' sines (samplers/cauchy_lobe.hpp): the nearest floats to the true values
+// but in rare near-halfway cases, and in the order of x wherever the true values are.
+TEST_CASE("SinCosRounded is sin and cos rounded to float, in their order", "[lib][lane_math]") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> angle(-12.6f, 12.6f);
+  long differ = 0, beyond_ulp = 0;
+  const int n = 2000000;
+  for (int i = 0; i < n; ++i) {
+    const float x = angle(rng);
+    const vrlis::SinCosPair<float> p = vrlis::SinCosRounded(x);
+    for (const auto& [got, want] : {std::pair<float, double>{p.sin, std::sin(double(x))}, {p.cos, std::cos(double(x))}}) {
+      const float nearest = static_cast<float>(want);
+      differ += got != nearest;
+      beyond_ulp += got != nearest && got != std::nextafter(nearest, 2.0f) && got != std::nextafter(nearest, -2.0f);
+    }
+  }
+  INFO(differ << " of " << 2 * n << " differ from the nearest float");
+  CHECK(beyond_ulp == 0);
+  CHECK(differ <= 2 * n / 100000);
+  // Consecutive floats from several starts: each result moves as the true value does (or stays).
+  long reversed = 0;
+  for (float start : {1e-6f, 0.1f, 0.7853f, 1.5707f, 1.5708f, 3.1415f, 4.71f, 6.2831f, -2.0f}) {
+    float x = start;
+    vrlis::SinCosPair<float> last = vrlis::SinCosRounded(x);
+    for (int i = 0; i < 200000; ++i) {
+      const float next = std::nextafter(x, 100.0f);
+      const vrlis::SinCosPair<float> e = vrlis::SinCosRounded(next);
+      const double ds = std::sin(double(next)) - std::sin(double(x)), dc = std::cos(double(next)) - std::cos(double(x));
+      reversed += (ds > 0 && e.sin < last.sin) || (ds < 0 && e.sin > last.sin);
+      reversed += (dc > 0 && e.cos < last.cos) || (dc < 0 && e.cos > last.cos);
+      x = next, last = e;
+    }
+  }
+  CHECK(reversed == 0);
+  CHECK(std::isnan(vrlis::SinCosRounded(std::numeric_limits<float>::quiet_NaN()).sin));
 }
 
 TEST_CASE("RsqrtLanes<float> is within 2 ulp over the normal floats", "[lib][lane_math]") {

@@ -41,6 +41,25 @@ enum class Accuracy { Full, Fit };
 template <typename Real>
 SinCosPair<Real> SinCos(Real x) { return {std::sin(x), std::cos(x)}; }
 
+// (sin, cos) of k pi/2 + r from those of r (s, c) and k's low bits (in `quadrant`): (s, c),
+// (c, -s), (-s, -c), (-c, s) for k mod 4 = 0 to 3, chosen with bit masks: the quadrant is random
+// across calls, and branches on it would be mispredicted.
+template <typename Real, typename Bits>
+[[gnu::always_inline]] inline SinCosPair<Real> Quadrant(Real s, Real c, Bits quadrant) {
+  static_assert(sizeof(Real) == sizeof(Bits), "the masks are the floating-point values' width");
+  constexpr Bits kSign = Bits(1) << (8 * sizeof(Bits) - 1), kShift = 8 * sizeof(Bits) - 2;
+  Bits sb, cb;
+  std::memcpy(&sb, &s, sizeof sb);
+  std::memcpy(&cb, &c, sizeof cb);
+  const Bits swap = Bits(0) - (quadrant & 1u);
+  const Bits sin_bits = ((sb & ~swap) | (cb & swap)) ^ (((quadrant & 2u) << kShift) & kSign);
+  const Bits cos_bits = ((cb & ~swap) | (sb & swap)) ^ ((((quadrant + 1u) & 2u) << kShift) & kSign);
+  SinCosPair<Real> out;
+  std::memcpy(&out.sin, &sin_bits, sizeof sin_bits);
+  std::memcpy(&out.cos, &cos_bits, sizeof cos_bits);
+  return out;
+}
+
 template <Accuracy kAccuracy = Accuracy::Full, typename Real>
 [[gnu::always_inline]] inline SinCosPair<Real> SinCosLanes(Real x) {
   if constexpr (!std::is_same_v<Real, float>) {
@@ -65,19 +84,42 @@ template <Accuracy kAccuracy = Accuracy::Full, typename Real>
                   (kAccuracy == Accuracy::Fit
                        ? 4.1666667e-2f + z * -1.3888889e-3f
                        : 4.1666667e-2f + z * (-1.3888889e-3f + z * (2.4801587e-5f + z * -2.7557319e-7f)));
-    // Quadrant k mod 4: (s, c), (c, -s), (-s, -c), (-c, s), chosen with bit masks: the
-    // quadrant is random across calls, and branches on it would be mispredicted.
-    std::uint32_t sb, cb;
-    std::memcpy(&sb, &s, sizeof sb);
-    std::memcpy(&cb, &c, sizeof cb);
-    std::uint32_t swap = 0u - (bits & 1u);
-    std::uint32_t sin_bits = ((sb & ~swap) | (cb & swap)) ^ ((bits & 2u) << 30);
-    std::uint32_t cos_bits = ((cb & ~swap) | (sb & swap)) ^ (((bits + 1u) & 2u) << 30);
-    SinCosPair<float> out;
-    std::memcpy(&out.sin, &sin_bits, sizeof sin_bits);
-    std::memcpy(&out.cos, &cos_bits, sizeof cos_bits);
-    return out;
+    return Quadrant(s, c, bits);
   }
+}
+
+// sin and cos of a float computed in double and rounded to float, branch-free for loops: the
+// reduction of SinCosLanes with pi/2 in three doubles (the first two of 32 significant bits, so
+// that k times them is exact for |k| < 2^21), then the Taylor series of sin r to r^13 and of
+// cos r to r^14, truncated below (pi/4)^15 / 15! = 2.1e-14 and (pi/4)^16 / 16! = 1.0e-15. Each
+// is then the float nearest the true value unless that lies within about 2e-14 of halfway
+// between two floats, so it follows x monotonically wherever sin or cos does, as glibc's
+// sincosf (also computed in double and rounded) does: what a sampler that must keep its
+// samples' order can take in vector lanes (samplers/cauchy_lobe.hpp). For |x| <= 1e4.
+[[gnu::always_inline]] inline SinCosPair<float> SinCosRounded(float x) {
+  const double d = x;
+  constexpr double kShift = 0x1.8p52;  // adding it rounds to an integer, left in the low bits
+  const double shifted = d * 0.6366197723675814 + kShift;
+  const double k = shifted - kShift;
+  std::uint64_t bits;
+  std::memcpy(&bits, &shifted, sizeof bits);
+  const double r = ((d - k * 0x1.921fb544p+0) - k * 0x1.0b4611a6p-34) - k * 0x1.3198a2e037073p-69;
+  const double z = r * r;
+  const double s =
+      r + r * z *
+              (-0.16666666666666666 +
+               z * (0.008333333333333333 +
+                    z * (-0.0001984126984126984 +
+                         z * (2.7557319223985893e-06 + z * (-2.505210838544172e-08 + z * 1.6059043836821613e-10)))));
+  const double c =
+      1 - 0.5 * z +
+      z * z *
+          (0.041666666666666664 +
+           z * (-0.001388888888888889 +
+                z * (2.48015873015873e-05 + z * (-2.755731922398589e-07 + z * (2.08767569878681e-09 +
+                                                                                  z * -1.1470745597729725e-11)))));
+  const SinCosPair<double> e = Quadrant(s, c, bits);
+  return {static_cast<float>(e.sin), static_cast<float>(e.cos)};
 }
 
 // 1 / sqrt(x) for normal x > 0: the classic bit-level first guess (relative error below

@@ -25,8 +25,8 @@ class CauchyMixtureAngle {
 
   // A batch's fits and samples in vector lanes (CauchyLobesLanes; Henyey-Greenstein point
   // lobes, two components): out[i] is sample_pdf(u[i]) of lane i's query, to rounding. The
-  // steps are sample_pdf's in loops over the lanes, the sines one lane at a time (libm's: the
-  // same numbers, and the same order of samples, as one query at a time).
+  // steps are sample_pdf's in loops over the lanes, the sines too (WidenedSinCosLanes: the same
+  // order of samples as one query at a time).
   template <int kSize>
   using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize, false>;
   template <int kSize>

@@ -25,9 +25,9 @@ class CauchySumAngle {
   }
 
   // A batch's fits and samples in vector lanes (CauchyLobesLanes): out[i] is sample_pdf(u[i])
-  // of lane i's query, to rounding. The two-lobe quadratic runs in the lanes, its sines one
-  // lane at a time (libm's: the same numbers, and the same order of samples, as one query at
-  // a time); a lane with fewer lobes (g = 0, or a flat lobe) is sampled as one query after.
+  // of lane i's query, to rounding. The two-lobe quadratic runs in the lanes, its sines too
+  // (WidenedSinCosLanes: the same order of samples as one query at a time); a lane with fewer
+  // lobes (g = 0, or a flat lobe) is sampled as one query after.
   template <int kSize>
   using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize, false>;
   template <int kSize>
