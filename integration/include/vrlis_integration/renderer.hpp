@@ -21,9 +21,7 @@ namespace vrlis::integration {
 
 // The VRL bounds a render chooses among by default: the gathers whole and two bounds. Not 0,
 // the path tracer: its pilot passes run without the effort control's price, which gains the
-// gathers several times their pilot's efficiency, and counted work prices a path-traced pixel
-// at a third of its time and a gathering one at three times its own
-// (docs/renderer.md#bound-choice).
+// gathers several times their pilot's efficiency (docs/renderer.md#bound-choice).
 inline const std::vector<float> kAutoBounds = {kUnbounded, 1.f, 0.1f};
 
 // A pass's VRLs and gathers, its seconds (wall clock: for the driver's report, never a
