@@ -14,16 +14,18 @@ inline long Divisor() {
   static const long d = [] {
     const char* text = std::getenv("VRLIS_TEST_DIVISOR");
     if (text == nullptr) return 1L;
-    const long v = std::atol(text);
-    // A typo must not quietly run the full suite under the sanitizers, nor none of it.
-    if (v < 1) throw std::invalid_argument("VRLIS_TEST_DIVISOR must be an integer >= 1, not '" + std::string(text) + "'");
+    char* end = nullptr;
+    const long v = std::strtol(text, &end, 10);
+    // A typo must neither quietly run the whole suite under the sanitizers nor skip all of it.
+    if (end == text || *end != '\0' || v < 1)
+      throw std::invalid_argument("VRLIS_TEST_DIVISOR must be an integer >= 1, not '" + std::string(text) + "'");
     return v;
   }();
   return d;
 }
 
-// n samples divided, at least `least`.
-inline long Divided(long n, long least = 1) { return n / Divisor() > least ? n / Divisor() : least; }
+// n divided, at least 1.
+inline long Divided(long n) { return n / Divisor() > 1 ? n / Divisor() : 1; }
 
 // Whether item i of a sequence runs: every Divisor()-th, the first included.
 inline bool Kept(long i) { return i % Divisor() == 0; }
