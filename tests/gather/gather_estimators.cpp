@@ -4,6 +4,8 @@
 // Bonferroni-corrected over every comparison in this file; each case also checks that the
 // same samples reject an integral 10 % off (the test can fail). An RGB medium sampled through
 // its grey query: each channel's GatherSample::weight_for against that channel's integral.
+// Samples: kSamples divided by VRLIS_TEST_DIVISOR (divisor.hpp); the 10 % controls' smallest
+// z, 15 at the full count, stays clear of the critical value 4 down to a divisor of 8.
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <catch2/catch.hpp>
@@ -16,12 +18,15 @@
 #include <random>
 #include <string>
 
+#include "divisor.hpp"
+
 namespace {
 
 using vrlis::Vec3;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // medium, surface, point light x float, double; an RGB medium's channels (3 cases x 2 samplers x 3)
 constexpr int kComparisons = 3 * 10 * 2 + 3 * 5 * 2 + 3 * 5 * 2 + 3 * 2 * 3;
+const int kSamples = int(vrlis::test::Divided(200000));
 
 double Critical() {
   return boost::math::quantile(boost::math::normal(), 1 - 0.01 / (2 * kComparisons));
@@ -104,7 +109,7 @@ void MediumGatherIsUnbiased(const char* type) {
       for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
         vrlis::GatherSamplers m{two, one};
         auto estimate = MeanAndError<Real>(
-            [&](Real u1, Real u2) { return double(vrlis::SampleMediumGather(m, q, u1, u2).weight); }, 200000, 7 + k);
+            [&](Real u1, Real u2) { return double(vrlis::SampleMediumGather(m, q, u1, u2).weight); }, kSamples, 7 + k);
         CheckUnbiased(std::string(type) + " medium case " + std::to_string(k) + " " + vrlis::Name(m), estimate, integral);
       }
   }
@@ -130,7 +135,7 @@ void MediumChannelsAreUnbiased() {
       std::mt19937_64 rng(37 + k);
       std::uniform_real_distribution<double> uniform(0, 1);
       vrlis::RunningMoments weights[3];
-      for (int i = 0; i < 200000; ++i) {
+      for (int i = 0; i < kSamples; ++i) {
         const Real u1 = Real(uniform(rng)), u2 = Real(uniform(rng));
         const vrlis::GatherSample<Real> s = vrlis::SampleMediumGather(m, q, u1, u2);
         for (int c = 0; c < 3; ++c) weights[c].add(double(s.weight_for(channel[c])));
@@ -163,7 +168,7 @@ void SurfaceGatherIsUnbiased(const char* type) {
                                 q.vrl.length);
     for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) {
       auto estimate = MeanAndError<Real>(
-          [&](Real u, Real) { return double(vrlis::SampleSurfaceGather(m, q, u).weight); }, 200000, 17 + k);
+          [&](Real u, Real) { return double(vrlis::SampleSurfaceGather(m, q, u).weight); }, kSamples, 17 + k);
       CheckUnbiased(std::string(type) + " surface case " + std::to_string(k) + " " + std::string(vrlis::Name(m)),
                     estimate, integral);
     }
@@ -181,7 +186,7 @@ void PointLightGatherIsUnbiased(const char* type) {
                                 double(q.camera.tmin), tmax[k]);
     for (vrlis::SegmentChoice m : vrlis::kSegmentSamplers) {
       auto estimate = MeanAndError<Real>(
-          [&](Real u, Real) { return double(vrlis::SamplePointLightGather(m, q, u).weight); }, 200000, 27 + k);
+          [&](Real u, Real) { return double(vrlis::SamplePointLightGather(m, q, u).weight); }, kSamples, 27 + k);
       CheckUnbiased(std::string(type) + " point light case " + std::to_string(k) + " " + std::string(vrlis::Name(m)),
                     estimate, integral);
     }
