@@ -88,37 +88,34 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
     TransportSettings pixel_transport = transport;
     if (bounds_.active()) pixel_transport.vrl_bound = bounds_.Bound(x, y);
     const bool path_traced = pixel_transport.vrl_bound == 0;  // the path tracer's pixel: no light paths
-    if (path_traced) {
-      // No gathers: none of the effort control's per-pixel settings, which cost about a
-      // path-traced pixel's own time again.
-      WorkScope scope(&pixel_work[i]);
-      ThreadWork() += renderer_work::kPixel;
-      return path_tracer.Li(ray, rng);
-    }
     GatherOptions options;
-    options.query_log = transport.query_log, options.weight_log = transport.weight_log;
-    options.bound = pixel_transport.vrl_bound;
-    if (scored) options.marginal_scores = &pass_scores.local();
-    vrlis::PixelRecord counted_only;  // with the control off: the calls' work and samples
-    if (effort.on) {
-      Rng choice(seed, pass, i, StreamPurpose::EffortModel);
-      options.effort = price_.Pixel(x, y, [&] { return choice.Uniform(); });
-      // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
-      // gather their VRLs under the accurate model, for the statistics alone
-      // (docs/maths.md#effort-accurate).
-      const std::uint64_t left = static_cast<std::uint64_t>(y) * settings_.width + static_cast<std::uint64_t>(x - x % 2);
-      options.pair = pairs_models && price_.Pairs(Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
-    } else {
-      options.effort.medium = options.effort.surface = base;
-      options.effort.visit_work = kVisitWork;
-      options.effort.record = &counted_only;
+    vrlis::PixelRecord counted_only;  // where the price keeps no record: the calls' work and samples
+    options.effort.record = &counted_only;
+    // A path-traced pixel has no gathers: none of the effort control's per-pixel settings,
+    // which cost about its own time again.
+    if (!path_traced) {
+      options.query_log = transport.query_log, options.weight_log = transport.weight_log;
+      options.bound = pixel_transport.vrl_bound;
+      if (scored) options.marginal_scores = &pass_scores.local();
+      if (effort.on) {
+        Rng choice(seed, pass, i, StreamPurpose::EffortModel);
+        options.effort = price_.Pixel(x, y, [&] { return choice.Uniform(); });
+        // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
+        // gather their VRLs under the accurate model, for the statistics alone
+        // (docs/maths.md#effort-accurate).
+        const std::uint64_t left = static_cast<std::uint64_t>(y) * settings_.width + static_cast<std::uint64_t>(x - x % 2);
+        options.pair = pairs_models && price_.Pairs(Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
+      } else {
+        options.effort.medium = options.effort.surface = base;
+        options.effort.visit_work = kVisitWork;
+      }
     }
     Spectrum L;
     const std::uint64_t vertices_before = ThreadVertices();
     {
       WorkScope scope(&pixel_work[i]);  // the pixel's own, from zero, whatever its thread did before
       ThreadWork() += renderer_work::kPixel;
-      L = VrlRadiance(scene_, pixel_transport, vrls, vpls, ray, rng, options);
+      L = path_traced ? path_tracer.Li(ray, rng) : VrlRadiance(scene_, pixel_transport, vrls, vpls, ray, rng, options);
     }
     const vrlis::PixelRecord& record = *options.effort.record;
     gather_work[i] = record.medium.work + record.surface.work;

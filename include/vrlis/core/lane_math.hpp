@@ -47,13 +47,13 @@ SinCosPair<Real> SinCos(Real x) { return {std::sin(x), std::cos(x)}; }
 template <typename Real, typename Bits>
 [[gnu::always_inline]] inline SinCosPair<Real> Quadrant(Real s, Real c, Bits quadrant) {
   static_assert(sizeof(Real) == sizeof(Bits), "the masks are the floating-point values' width");
-  constexpr Bits kSign = Bits(1) << (8 * sizeof(Bits) - 1), kShift = 8 * sizeof(Bits) - 2;
+  constexpr Bits kShift = 8 * sizeof(Bits) - 2;  // bit 1 of the quadrant to the sign bit
   Bits sb, cb;
   std::memcpy(&sb, &s, sizeof sb);
   std::memcpy(&cb, &c, sizeof cb);
   const Bits swap = Bits(0) - (quadrant & 1u);
-  const Bits sin_bits = ((sb & ~swap) | (cb & swap)) ^ (((quadrant & 2u) << kShift) & kSign);
-  const Bits cos_bits = ((cb & ~swap) | (sb & swap)) ^ ((((quadrant + 1u) & 2u) << kShift) & kSign);
+  const Bits sin_bits = ((sb & ~swap) | (cb & swap)) ^ ((quadrant & 2u) << kShift);
+  const Bits cos_bits = ((cb & ~swap) | (sb & swap)) ^ (((quadrant + 1u) & 2u) << kShift);
   SinCosPair<Real> out;
   std::memcpy(&out.sin, &sin_bits, sizeof sin_bits);
   std::memcpy(&out.cos, &cos_bits, sizeof cos_bits);

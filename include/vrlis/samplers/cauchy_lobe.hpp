@@ -32,12 +32,14 @@ SinCosPair<Widened<Real>> WidenedSinCos(Real s) {
 template <typename Real>
 void WidenedSinCosLanes(const Real* s, int lanes, Widened<Real>* sin, Widened<Real>* cos) {
   for (int i = 0; i < lanes; ++i) {
+    SinCosPair<Widened<Real>> e;
     if constexpr (std::is_same_v<Real, float>) {
-      const SinCosPair<float> e = SinCosRounded(s[i]);
-      sin[i] = e.sin, cos[i] = e.cos;
+      const SinCosPair<float> f = SinCosRounded(s[i]);
+      e = {f.sin, f.cos};
     } else {
-      sin[i] = std::sin(s[i]), cos[i] = std::cos(s[i]);
+      e = WidenedSinCos(s[i]);
     }
+    sin[i] = e.sin, cos[i] = e.cos;
   }
 }
 
