@@ -128,7 +128,10 @@ std::vector<double> VBreaks(const Config& c, const M& m) {
 }
 
 // The marginal Int du f at v: in the camera step's angle variable (f / (dtheta/du) is
-// bounded), split at the point lobe's peak.
+// bounded), split at the point lobe's peak. To 1e-7 (and the whole integral to 1e-6): at
+// 1e-9 and 1e-7 the whole estimator's references agreed to 2e-11 and took 7x the time, the
+// error estimate refining to Boost's depth limit on rounding; its checks' standard errors are
+// above 1e-4 of the mean.
 double Marginal(const Config& c, double v) {
   SegmentQuery<double> q;
   q.origin = c.xc;
@@ -146,7 +149,7 @@ double Marginal(const Config& c, double v) {
   return Pieces([&](double delta) {
     double u = dom.t_at(delta), f = Integrand(c, u, v) / dom.dtheta_dt(u);
     return std::isfinite(f) ? f : 0.0;  // 0 / 0 where an unbounded segment reaches max<double>
-  }, x, 1e-9);
+  }, x, 1e-7);
 }
 
 // unbounded: the camera segment extended to tmax = +infinity (the VRL placed as for the
@@ -301,7 +304,7 @@ TEST_CASE("VrlMarginal + FullProduct: the whole estimator is unbiased, float and
     // Reference: Int dv Int du f, the outer integral over v split at the closest point and
     // refined towards it.
     VrlMarginal<double> md(Query<double>(c));
-    double reference = Pieces([&](double v) { return Marginal(c, v); }, VBreaks(c, md), 1e-7);
+    double reference = Pieces([&](double v) { return Marginal(c, v); }, VBreaks(c, md), 1e-6);
     REQUIRE(reference > 0);
     CheckWholeEstimator<float>(c, reference, rng_float);
     CheckWholeEstimator<double>(c, reference, rng_double);
