@@ -187,7 +187,11 @@ void CheckSegmentSampler(const Config& wanted, std::uint64_t seed) {
     return f > 0 ? (p > 0 ? f * f / p * m.dt_dtheta(th) : kInf) : 0.0;
   };
   const double integral = Sum(CellIntegrals(f_theta, edges));
-  const double second = Sum(CellIntegrals(f2p_theta, edges, 1e-6));
+  // The second moment to the bias allowed for rounding (at least 1e-6): its quadrature error
+  // can raise se by at most sqrt(tol / n) of the integral, 7e-5 for float at n = 20000, where
+  // the check allows a 1e-4 bias anyway; at 1e-6 the float pdf's rounding noise sent the
+  // quadrature to its depth limit, doubling the float battery's time.
+  const double second = Sum(CellIntegrals(f2p_theta, edges, std::max(1e-6, Tolerance<Real>::estimator_bias)));
   const double variance = std::max(ratio.variance(), second - integral * integral);
   const double se = std::sqrt(variance / double(ratio.count()));
   const double z = se > 0 ? std::abs(ratio.mean() - integral) / se : 0.0;  // se = 0: f / pdf is constant
