@@ -23,6 +23,7 @@ pairs=${VRLIS_ACCURACY_PAIRS:-256}
 
 if [ -z "${VRLIS_BENCH_BUILD:-}" ]; then  # (the CMake `bench` target passes its own, configured build)
   source tools/lib.sh
+  tools/deps.sh charts
   build_preset release vrlis_bench vrlis_accuracy vrlis_samplers  # vrlis_samplers: the sampler list (tools/samplers.py)
 fi
 mkdir -p "$out"

@@ -10,10 +10,11 @@ build_preset() {
   cmake --build --preset "$preset" -j "$(nproc)" ${1:+--target "$@"}
 }
 
-# For tools/main.sh and tools/decompose.sh: splits --publish from the arguments meant for
-# vrl_compare and builds vrl_compare. Sets `publish` (docs/compare with --publish, else
-# empty) and `args` (every other argument).
+# For tools/main.sh, tools/decompose.sh and tools/effort.sh: installs the charts' packages,
+# splits --publish from the arguments meant for vrl_compare and builds vrl_compare. Sets
+# `publish` (docs/compare with --publish, else empty) and `args` (every other argument).
 prepare_vrl_compare() {
+  tools/deps.sh charts
   publish=""
   args=()
   local a
