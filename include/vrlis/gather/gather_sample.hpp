@@ -99,19 +99,18 @@ bool Usable(SegmentSample<Real> s) {
   return (s.pdf > 0) & (s.pdf < kInf) & (std::abs(s.t) < kInf);  // no branches: it runs in lanes too
 }
 
-// Fills the connection and the weights from the integrand's factors and the pdf; any
-// non-finite or non-positive outcome becomes "nothing to trace" (never a NaN in an image).
-// kLanes: for a loop over a batch's gathers.
-// (Always inlined: in the batch's lanes loop a call keeps the loop scalar, and GCC stopped
-// inlining it once the batch's frame grew.)
+// Fills s's connection and weights from the integrand's factors and the pdf; any non-finite
+// or non-positive outcome becomes "nothing to trace" (never a NaN in an image). kLanes: for
+// a loop over a batch's gathers.
+// (Always inlined, and in place: in the batch's lanes loop a call, or a copy of the whole
+// sample that GCC does not split into its fields, keeps the loop scalar.)
 template <bool kLanes = false, typename Real>
-[[gnu::always_inline]] inline GatherSample<Real> Finish(GatherSample<Real> s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
+[[gnu::always_inline]] inline void Finish(GatherSample<Real>& s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
   s.bare_weight = FiniteOrZero<kLanes>(f.bare / pdf);
   s.path_length = f.path_length;
   s.scatterings = f.scatterings;
   s.transmittance = PickExp<kLanes>(-m.sigma_t * f.connection);
   s.weight = FiniteOrZero<kLanes>(s.template weight_for<kLanes>(m));
-  return s;
 }
 }  // namespace detail
 

@@ -66,22 +66,18 @@ decltype(auto) WithGatherSamplers(FixedSamplers<Camera, Vrl>, F&& f) {
   return f(Type<typename Vrl::template Sampler<Real>>{}, Type<typename Camera::template Sampler<Real>>{});
 }
 
-// The gather's outcome for step one's sample v and step two's sample t (either may be
-// unusable). kLanes: branch-free for a loop over a batch's gathers, and the caller empties
-// the sample where either is unusable.
+// The gather's outcome s for step one's sample v and step two's sample t, both usable.
+// kLanes: branch-free for a loop over a batch's gathers (in place, as detail::Finish).
 template <bool kLanes = false, typename Real>
-[[gnu::always_inline]] inline GatherSample<Real> FinishWithCamera(const MediumGatherQuery<Real>& q, SegmentSample<Real> v,
-                                                                  SegmentSample<Real> t) {
-  if constexpr (!kLanes)
-    if (!detail::Usable(v) || !detail::Usable(t)) return {};
-  GatherSample<Real> s;
+[[gnu::always_inline]] inline void FinishWithCamera(const MediumGatherQuery<Real>& q, SegmentSample<Real> v,
+                                                    SegmentSample<Real> t, GatherSample<Real>& s) {
   s.camera_point = q.camera.at(t.t);
   s.light_point = q.vrl.at(v.t);
   s.t = t.t;
   s.pdf_t = t.pdf;
   s.v = v.t;
   s.pdf_v = v.pdf;
-  return detail::Finish<kLanes>(s, MediumGatherFactors<kLanes>(q, t.t, v.t), q.medium, t.pdf * v.pdf);
+  detail::Finish<kLanes>(s, MediumGatherFactors<kLanes>(q, t.t, v.t), q.medium, t.pdf * v.pdf);
 }
 
 // Step two and the weight for step one's sample v (usable or not) and u_camera.
@@ -89,8 +85,10 @@ template <typename CameraSampler, typename Real>
 [[gnu::always_inline]] inline GatherSample<Real> FinishMediumGather(ValidQuery, const MediumGatherQuery<Real>& q,
                                                                     SegmentSample<Real> v, Real u_camera) {
   if (!detail::Usable(v)) return {};
-  Vec3<Real> y = q.vrl.at(v.t);
-  return FinishWithCamera(q, v, CameraSampler(ValidQuery{}, CameraStepQuery(q, y)).sample_pdf(u_camera));
+  const SegmentSample<Real> t = CameraSampler(ValidQuery{}, CameraStepQuery(q, q.vrl.at(v.t))).sample_pdf(u_camera);
+  GatherSample<Real> s;
+  if (detail::Usable(t)) FinishWithCamera(q, v, t, s);
+  return s;
 }
 
 // One estimate from two uniform numbers (u_vrl for step one, u_camera for step two) with
@@ -155,8 +153,9 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
     Real vt[kSize], vpdf[kSize];
     for (int i = 0; i < lanes; ++i) vt[i] = v[i < n ? i : 0].t, vpdf[i] = v[i < n ? i : 0].pdf;
     AngleFrameLanes<Real, kSize> frames;
-    for (int i = 0; i < lanes; ++i)
-      frames.set(i, ReduceToAngles<true>(vrl[i].at(vt[i]), camera.origin, camera.dir, camera.tmin, camera.tmax));
+    const Vec3<Real> origin = camera.origin, dir = camera.dir;  // (copies of the whole
+    const Real tmin = camera.tmin, tmax = camera.tmax;           // vectors in the loop keep it scalar)
+    for (int i = 0; i < lanes; ++i) frames.set(i, ReduceToAngles<true>(vrl[i].at(vt[i]), origin, dir, tmin, tmax));
     constexpr bool kAuto = std::is_same_v<CameraSampler, AutoEntry::Sampler<Real>>;
     // One-at-a-time fits, none where step one sampled nothing (a sampler fitted in lanes
     // needs none; their frame kept GCC from inlining the lanes' finish).
@@ -213,18 +212,24 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       SegmentSample<Real> t{p.t, pdf_delta[i] * p.dtheta_dt}, vs{vt[i], vpdf[i]};
       const bool v_usable = Usable(vs), t_usable = Usable(t);
       usable[i] = v_usable & t_usable;  // (not &&: a branch keeps the loop scalar)
-      samples[i] = FinishWithCamera<true>(MediumGatherQuery<Real>{camera, vrl[i], medium}, vs, t);
+      FinishWithCamera<true>(MediumGatherQuery<Real>{camera, vrl[i], medium}, vs, t, samples[i]);
     }
+    // `auto`'s samples over equiangular sampling's density: the two share the angle's
+    // Jacobian, so the ratio is the angle's density times the interval's width.
+    Real over_equiangular[kSize];
+    if constexpr (kAuto)
+      for (int i = 0; i < lanes; ++i) over_equiangular[i] = FiniteOrZero<true>(pdf_delta[i] * frames.width[i]);
     for (int i = 0; i < n; ++i) {
       GatherSample<Real>& g = out[first + i];
       g = usable[i] ? samples[i] : GatherSample<Real>{};
-      if constexpr (kAuto) {  // over the drawn sample's density
+      if constexpr (kAuto) {
         if (!g.contributes()) continue;
-        const SegmentSample<Real> t{g.t, g.pdf_t};
-        const SegmentQuery<Real> q = step_query(i);
-        const AngleDomain<Real> domain(q, frames[i]);
-        g.over_equiangular = detail::OverEquiangular(domain, t);
-        if (measure_mixture) g.over_mixture = detail::OverDensity<CauchyMixtureAngle<Real>>(domain, q, t);
+        g.over_equiangular = over_equiangular[i];
+        if (measure_mixture) {
+          const SegmentQuery<Real> q = step_query(i);
+          g.over_mixture = detail::OverDensity<CauchyMixtureAngle<Real>>(AngleDomain<Real>(q, frames[i]), q,
+                                                                         SegmentSample<Real>{g.t, g.pdf_t});
+        }
       }
     }
   }

@@ -41,7 +41,8 @@ GatherSample<Real> SamplePointLightGather(SegmentChoice method, const PointLight
     s.light_point = q.light;
     s.t = t.t;
     s.pdf_t = t.pdf;
-    return detail::Finish(s, PointLightGatherFactors(q, t.t), q.medium, t.pdf);
+    detail::Finish(s, PointLightGatherFactors(q, t.t), q.medium, t.pdf);
+    return s;
   });
 }
 

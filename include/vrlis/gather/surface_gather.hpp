@@ -49,7 +49,8 @@ template <typename Real>
   s.light_point = q.vrl.at(v.t);
   s.v = v.t;
   s.pdf_v = v.pdf;
-  return detail::Finish(s, SurfaceGatherFactors(q, v.t), q.medium, v.pdf);
+  detail::Finish(s, SurfaceGatherFactors(q, v.t), q.medium, v.pdf);
+  return s;
 }
 
 // One estimate with the sampler fixed at compile time, for a query the caller has validated
