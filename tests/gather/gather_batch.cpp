@@ -22,6 +22,8 @@
 // apart: v0 before, inside and after the VRL, near-parallel lines, a VRL crossing the camera
 // line, tiny and long VRLs, and runs of one VRL (a split gather's samples, which share step
 // one's fit). A batch that mixed up lanes, fits or random numbers fails on the first sample.
+// For `auto` the lanes' rule (AutoAngle::ChooseLanes) must have chosen each lane's model as
+// the one-VRL rule did, and the queries compared take each of its three models.
 //
 // Medium to surface: for every VRL sampler, SampleSurfaceGathers over a surface point and n
 // VRLs (with runs of one VRL, which share a fit) returns, VRL by VRL, the one-VRL gather
@@ -158,6 +160,7 @@ void BatchIsOneAtATime(bool widest) {
   const M media[] = {M::FromScatteringExtinction(Real(0.6), Real(0.4), Real(0.5)),
                      M::FromScatteringExtinction(Real(-0.7), Real(0.8), Real(1.5)),
                      M::FromScatteringExtinction(Real(0), Real(0.4), Real(0.5))};
+  int models[3] = {};  // auto's compared samples by their model (AutoModel)
   for (const vrlis::Medium<Real>& medium : media)
     for (vrlis::VrlChoice one : vrlis::kVrlSamplers)
       for (vrlis::SegmentChoice two : vrlis::kSegmentSamplers) {
@@ -200,6 +203,8 @@ void BatchIsOneAtATime(bool widest) {
               using CameraSampler = typename decltype(step_two)::type;
               const vrlis::Vec3<Real> y = q.vrl.at(batch[i].v);
               const CameraSampler sampler(vrlis::ValidQuery{}, vrlis::CameraStepQuery(q, y));
+              if constexpr (std::is_same_v<CameraSampler, vrlis::Auto<Real>>)
+                ++models[static_cast<int>(sampler.distribution().model())];
               REQUIRE(SameSegmentSample(batch[i].t, batch[i].pdf_t, batch[i].camera_point,
                                         sampler.sample_pdf(u_camera[i]).t, sampler,
                                         [&](Real t) { return camera.at(t); }));

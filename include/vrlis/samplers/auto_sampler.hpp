@@ -82,15 +82,22 @@ double ClampedCosineSecondMoment(const AngleDomain<Real>& dom, const PhaseProduc
   return i1 > 0 ? w * i2 / (i1 * i1) : std::numeric_limits<double>::infinity();
 }
 
+// How much longer the way through the medium to `point` is from tmax than from tmin, along
+// the bounded segment origin + t dir and on to the point (at least 0). kLanes: for a loop over
+// a batch's queries (lane_math.hpp).
+template <bool kLanes = false, typename Real>
+Real DepthGrowth(Vec3<Real> point, Vec3<Real> origin, Vec3<Real> dir, Real tmin, Real tmax) {
+  const Vec3<Real> far = point - (origin + tmax * dir), near = point - (origin + tmin * dir);
+  return std::max((tmax - tmin) + PickSqrt<kLanes>(Dot(far, far)) - PickSqrt<kLanes>(Dot(near, near)), Real(0));
+}
+
 // The ratio of the transmittance (along the segment and on to p) between tmin and tmax:
 // exp(sigma_t x the growth of the optical depth); infinity on an unbounded segment.
 template <typename Real>
 Real TransmittanceRangeRatio(const SegmentQuery<Real>& q) {
   if (!(q.sigma_t > 0)) return 1;
   if (!std::isfinite(q.tmax)) return std::numeric_limits<Real>::infinity();
-  Real depth = (q.tmax - q.tmin) + Length(q.point - (q.origin + q.tmax * q.dir)) -
-               Length(q.point - (q.origin + q.tmin * q.dir));
-  return std::exp(q.sigma_t * std::max(depth, Real(0)));
+  return std::exp(q.sigma_t * DepthGrowth(q.point, q.origin, q.dir, q.tmin, q.tmax));
 }
 
 // An upper bound of the ratio max / min of the whole target (phases x transmittance).
@@ -108,10 +115,12 @@ Real LobeRangeRatioBound(Real g) {
   return a < 1 ? r * r * r : std::numeric_limits<Real>::infinity();
 }
 
-// Kantorovich's bound on the relative variance of a weight whose max / min ratio is rho.
+// Kantorovich's bound on the relative variance of a weight whose max / min ratio is rho
+// (branch-free: it runs in lanes too).
 template <typename Real>
 Real UniformVarianceBound(Real rho) {
-  return std::isfinite(rho) ? Sqr(rho - 1) / (4 * rho) : std::numeric_limits<Real>::infinity();
+  constexpr Real kInf = std::numeric_limits<Real>::infinity();
+  return SelectLanes(rho < kInf, Sqr(rho - 1) / (4 * rho), kInf);
 }
 
 // 1 - z e^z E1(z) for z > 0 (Abramowitz and Stegun 5.1.53 below one, 5.1.56 above, both
@@ -164,34 +173,39 @@ struct AutoRule {
   static constexpr double kFitResidual = 0.05;
 
   // Predicted (1 + relative variance) x cost of each model, from equiangular's predicted
-  // second moment W Int f^2 / (Int f)^2 and the transmittance's (TransmittanceMoment).
-  static std::array<double, 3> Scores(double equiangular_moment, double transmittance_moment) {
-    double fit = 1 + kFitResidual;
-    return {equiangular_moment * kCost[0], transmittance_moment * fit * kCost[1], fit * kCost[2]};
+  // second moment W Int f^2 / (Int f)^2 and the transmittance's (TransmittanceMoment). In
+  // double one query at a time, in the batch's Real in lanes (AutoAngle::ChooseLanes).
+  template <typename T>
+  static std::array<T, 3> Scores(T equiangular_moment, T transmittance_moment) {
+    const T fit = 1 + T(kFitResidual);
+    return {equiangular_moment * T(kCost[0]), transmittance_moment * fit * T(kCost[1]), fit * T(kCost[2])};
   }
-  static AutoModel Cheapest(const std::array<double, 3>& score) {
-    std::size_t best = 0;
-    for (std::size_t k = 1; k < score.size(); ++k)
-      if (score[k] < score[best]) best = k;  // ties keep the cheaper model
-    return AutoModel(best);
+  // Ties keep the cheaper model (selects, not branches: it runs in lanes too).
+  template <typename T>
+  static AutoModel Cheapest(const std::array<T, 3>& score) {
+    const bool novak = score[1] < score[0], full = score[2] < SelectLanes(novak, score[1], score[0]);
+    return AutoModel(2 * int(full) + int(novak & !full));
   }
   // A bound of equiangular's second moment from a bound `phases` of the phase product's ratio
   // and the transmittance's ratio and moment: Kantorovich's on the whole target, or the
   // transmittance's moment times phases^2 (f <= max(phases) T, f >= min(phases) T), which
   // stays finite on an unbounded segment.
-  static double MomentBound(double phases, double transmittance_ratio, double transmittance_moment) {
+  template <typename T>
+  static T MomentBound(T phases, T transmittance_ratio, T transmittance_moment) {
     return std::min(1 + UniformVarianceBound(phases * transmittance_ratio), Sqr(phases) * transmittance_moment);
   }
   // The early-outs, which look at no lobe and never change a decision. Every prediction of
   // equiangular's second moment is at least the transmittance's moment, so FullProduct wins
   // whenever it beats that floor and Novák (whose score depends on that moment alone).
-  static bool FullProductSuffices(double transmittance_moment) {
+  template <typename T>
+  static bool FullProductSuffices(T transmittance_moment) {
     return Cheapest(Scores(transmittance_moment, transmittance_moment)) == AutoModel::FullProduct;
   }
   // Equiangular wins whenever a bound of its moment from any bound of the phases' ratio is no
   // more than the cheapest fit's best case (relative variance 0 at Novák's cost).
-  static bool EquiangularSuffices(double phases, double transmittance_ratio, double transmittance_moment) {
-    return MomentBound(phases, transmittance_ratio, transmittance_moment) <= kCost[1];
+  template <typename T>
+  static bool EquiangularSuffices(T phases, T transmittance_ratio, T transmittance_moment) {
+    return MomentBound(phases, transmittance_ratio, transmittance_moment) <= T(kCost[1]);
   }
 
   // Equiangular's predicted second moment: MomentBound with the phases' exact ratio; for a
@@ -235,19 +249,70 @@ class AutoAngle {
     return AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, built, ratio, moment), moment));
   }
 
+  // Choose for a batch of the medium gathers' queries in vector lanes (their point lobe a
+  // Henyey-Greenstein lobe with the segment's g, their segment bounded), from their angle
+  // frames, VRL directions (axis_*) and DepthGrowth. Where the early-outs decide every lane
+  // (a medium whose transmittance alone asks for FullProduct, say) no lobe is evaluated;
+  // else every lane takes the whole rule (the early-outs never change a decision) on the
+  // lanes' phase products. Inside the interval the point lobe can only reach its peak and
+  // antipode values, which need no angle. The same decisions as Choose but where rounding
+  // parts two scores that tie.
+  template <int kSize>
+  static void ChooseLanes(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y,
+                          const Real* axis_z, Vec3<Real> dir, Real g, Real sigma_t, const Real* depth, int lanes,
+                          AutoModel* models) {
+    constexpr Real kInf = std::numeric_limits<Real>::infinity();
+    const Real phases_bound = Sqr(LobeRangeRatioBound(g));
+    Real ratio[kSize], moment[kSize];
+    int undecided = 0;
+    for (int i = 0; i < lanes; ++i) {
+      ratio[i] = ExpLanes(sigma_t * depth[i]), moment[i] = 1 + UniformVarianceBound(ratio[i]);
+      const bool equiangular = AutoRule::EquiangularSuffices(phases_bound, ratio[i], moment[i]);
+      const bool full = AutoRule::FullProductSuffices(moment[i]);
+      models[i] = AutoModel(2 * int(full & !equiangular));
+      undecided += int(!equiangular & !full);
+    }
+    if (undecided == 0) return;
+    typename PhaseProduct<Real>::template Lanes<kSize, false> phase;
+    phase.template build<Accuracy::Full>(frames, axis_x, axis_y, axis_z, dir, g, sigma_t, lanes);
+    for (int i = 0; i < lanes; ++i) {
+      const Real width = phase.width[i], r = phase.r[i], one_minus_r = phase.one_minus_r[i];
+      auto segment = [&](Real delta) {  // PhaseProduct::segment_lobe
+        const SinCosPair<Real> half = SinCosLanes((delta - phase.lower[i]) / 2);
+        return HenyeyGreenstein<true>(g, 2 * Sqr(half.sin), 2 * Sqr(half.cos));
+      };
+      auto point = [&](Real s2) {  // PhaseProduct::point_lobe, s2 the squared sine of half its angle
+        return HenyeyGreenstein<true>(g, one_minus_r + 2 * r * s2, one_minus_r + 2 * r * (1 - s2));
+      };
+      const Real s0 = segment(0), s1 = segment(width);
+      const Real p0 = point(Sqr(SinCosLanes(-phase.theta_e[i] / 2).sin));
+      const Real p1 = point(Sqr(SinCosLanes((width - phase.theta_e[i]) / 2).sin));
+      const Real peak = phase.point_peak(i), below = peak - kPi<Real>, above = peak + kPi<Real>;
+      const Real hi = SelectLanes((peak > 0) & (peak < width), point(g >= 0 ? Real(0) : Real(1)), std::max(p0, p1));
+      const Real lo = SelectLanes(((below > 0) & (below < width)) | ((above > 0) & (above < width)),
+                                  point(g >= 0 ? Real(1) : Real(0)), std::min(p0, p1));
+      const Real phases = std::max(s0, s1) / std::min(s0, s1) * (hi / lo);
+      models[i] = AutoRule::Cheapest(AutoRule::Scores(
+          AutoRule::MomentBound(SelectLanes(phases > 0, phases, kInf), ratio[i], moment[i]), moment[i]));
+    }
+  }
+
   // A batch's camera steps in vector lanes (the medium gathers', as the fits' SampleLanes):
-  // lane i took models[i] (Choose, one query at a time: the rule branches); each fitted model's
-  // lanes are gathered into a batch of their own and fitted and sampled in lanes. out[i] is
-  // sample_pdf(u[i]) of lane i's query, to rounding.
+  // lane i took models[i] (Choose or ChooseLanes); each fitted model's lanes are gathered into
+  // a batch of their own (unless they are all of them) and fitted and sampled in lanes. out[i]
+  // is sample_pdf(u[i]) of lane i's query, to rounding.
   template <int kSize>
   static void SampleLanes(const AutoModel* models, const detail::AngleFrameLanes<Real, kSize>& frames,
                           const Real* axis_x, const Real* axis_y, const Real* axis_z, Vec3<Real> dir, Real g,
                           Real sigma_t, const Real* u, int lanes, SegmentSample<Real>* out) {
-    for (int i = 0; i < lanes; ++i)
-      if (models[i] == AutoModel::Equiangular) out[i] = UniformAngle<Real>(frames.width[i]).sample_pdf(u[i]);
+    int novak = 0, full = 0;  // how many lanes took each fit (counted branch-free)
+    for (int i = 0; i < lanes; ++i) novak += int(models[i] == AutoModel::Novak), full += int(models[i] == AutoModel::FullProduct);
+    if (novak + full < lanes)
+      for (int i = 0; i < lanes; ++i)
+        if (models[i] == AutoModel::Equiangular) out[i] = UniformAngle<Real>(frames.width[i]).sample_pdf(u[i]);
     const ModelLanes<kSize> batch{models, frames, axis_x, axis_y, axis_z, dir, g, sigma_t, u, lanes};
-    batch.template Sample<NovakFit>(AutoModel::Novak, out);
-    batch.template Sample<FullFit>(AutoModel::FullProduct, out);
+    batch.template Sample<NovakFit>(AutoModel::Novak, novak, out);
+    batch.template Sample<FullFit>(AutoModel::FullProduct, full, out);
   }
 
   AutoModel model() const { return AutoModel(dist_.index()); }
@@ -282,14 +347,21 @@ class AutoAngle {
     const Real* u;
     int lanes;
 
-    // The lanes that took `model`, fitted and sampled by Fit's SampleLanes (the unused lanes
-    // of the gathered batch repeat its first).
+    // The `taken` lanes that took `model`, fitted and sampled by Fit's SampleLanes (the unused lanes
+    // of the gathered batch repeat its first); where every lane took it, the batch as it is.
     template <typename Fit>
-    void Sample(AutoModel model, SegmentSample<Real>* out) const {
-      int index[kSize], taken = 0;
-      for (int i = 0; i < lanes; ++i)
-        if (models[i] == model) index[taken++] = i;
+    void Sample(AutoModel model, int taken, SegmentSample<Real>* out) const {
+      auto fit = [&](const detail::AngleFrameLanes<Real, kSize>& f, const Real* x, const Real* y, const Real* z,
+                     const Real* v, int count, SegmentSample<Real>* d) {
+        typename Fit::template TargetLanes<kSize> target;
+        target.template build<Accuracy::Fit>(f, x, y, z, dir, g, sigma_t, count);
+        Fit::template SampleLanes<kSize>(target, v, count, d);
+      };
       if (taken == 0) return;
+      if (taken == lanes) return fit(frames, axis_x, axis_y, axis_z, u, lanes, out);
+      int index[kSize];
+      for (int i = 0, j = 0; i < lanes; ++i)
+        if (models[i] == model) index[j++] = i;
       const int whole = detail::WholeLanes(taken);
       detail::AngleFrameLanes<Real, kSize> gathered;
       Real x[kSize], y[kSize], z[kSize], v[kSize];
@@ -298,10 +370,8 @@ class AutoAngle {
         gathered.set(j, frames[i]);
         x[j] = axis_x[i], y[j] = axis_y[i], z[j] = axis_z[i], v[j] = u[i];
       }
-      typename Fit::template TargetLanes<kSize> target;
-      target.template build<Accuracy::Fit>(gathered, x, y, z, dir, g, sigma_t, whole);
       SegmentSample<Real> d[kSize];
-      Fit::template SampleLanes<kSize>(target, v, whole, d);
+      fit(gathered, x, y, z, v, whole, d);
       for (int j = 0; j < taken; ++j) out[index[j]] = d[j];
     }
   };
