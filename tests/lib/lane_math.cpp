@@ -1,5 +1,6 @@
-// The vectorisable float math of core/lane_math.hpp against double, over every input the
-// fits can pass and beyond: the accuracy its header states.
+// The vectorisable float math of core/lane_math.hpp against double (and the float samplers'
+// double square root against std::sqrt), over every input the fits can pass and beyond: the
+// accuracy its header states.
 #include <catch2/catch.hpp>
 
 #include <vrlis/core/lane_math.hpp>
@@ -76,6 +77,46 @@ TEST_CASE("RsqrtLanes<float> is within 2 ulp over the normal floats", "[lib][lan
     worst = std::max(worst, std::abs(vrlis::RsqrtLanes(x) - exact) / exact);
   }
   CHECK(worst <= 2 * ulp);
+}
+
+// Over the normal numbers of Real at every exponent, and at 0 and infinity: within `ulps` of
+// the correctly rounded std::sqrt.
+template <typename Real, typename Rng>
+void SqrtLanesIsWithin(double ulps, Rng& rng) {
+  std::uniform_real_distribution<Real> mantissa(1, 2);
+  const int exponents = std::numeric_limits<Real>::max_exponent - std::numeric_limits<Real>::min_exponent;
+  double worst = 0;
+  auto take = [&](Real x) {
+    const Real exact = std::sqrt(x);
+    const Real ulp = std::nextafter(exact, std::numeric_limits<Real>::infinity()) - exact;
+    worst = std::max(worst, double(std::abs(vrlis::SqrtLanes(x) - exact) / ulp));
+  };
+  for (int i = 0; i < 2000000; ++i)
+    take(std::ldexp(mantissa(rng), std::numeric_limits<Real>::min_exponent - 1 + i % exponents));
+  take(std::numeric_limits<Real>::min());
+  take(std::numeric_limits<Real>::max());
+  CHECK(worst <= ulps);
+  CHECK(vrlis::SqrtLanes(Real(0)) == 0);
+  CHECK(vrlis::SqrtLanes(std::numeric_limits<Real>::infinity()) == std::numeric_limits<Real>::infinity());
+}
+
+TEST_CASE("SqrtLanes is within 3 ulp (float) and 1 ulp (double) over the normal numbers", "[lib][lane_math]") {
+  std::mt19937 rng(13);
+  SqrtLanesIsWithin<float>(3, rng);
+  SqrtLanesIsWithin<double>(1, rng);
+}
+
+TEST_CASE("SelectLanes picks either operand bit for bit (float and double)", "[lib][lane_math]") {
+  for (float a : {0.0f, -0.0f, 1.5f, -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::denorm_min()}) {
+    CHECK(std::signbit(vrlis::SelectLanes(true, a, 2.0f)) == std::signbit(a));
+    CHECK(vrlis::SelectLanes(true, a, 2.0f) == a);
+    CHECK(vrlis::SelectLanes(false, 2.0f, a) == a);
+    const double d = a;
+    CHECK(std::signbit(vrlis::SelectLanes(true, d, 2.0)) == std::signbit(d));
+    CHECK(vrlis::SelectLanes(true, d, 2.0) == d);
+    CHECK(vrlis::SelectLanes(false, 2.0, d) == d);
+  }
+  CHECK(std::isnan(vrlis::SelectLanes(true, std::nan(""), 1.0)));
 }
 
 TEST_CASE("The lanes' Accuracy::Fit is within 1e-4 relative (sine and cosine: of 1, and relative near 0)",

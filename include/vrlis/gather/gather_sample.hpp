@@ -104,13 +104,16 @@ bool Usable(SegmentSample<Real> s) {
 // a loop over a batch's gathers.
 // (Always inlined, and in place: in the batch's lanes loop a call, or a copy of the whole
 // sample that GCC does not split into its fields, keeps the loop scalar.)
+// The weight is weight_for's from the values written, not read back from s (a read after a
+// write of the same struct stopped GCC vectorising the loop).
 template <bool kLanes = false, typename Real>
 [[gnu::always_inline]] inline void Finish(GatherSample<Real>& s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
-  s.bare_weight = FiniteOrZero<kLanes>(f.bare / pdf);
+  const Real bare = FiniteOrZero<kLanes>(f.bare / pdf);
+  s.bare_weight = bare;
   s.path_length = f.path_length;
   s.scatterings = f.scatterings;
   s.transmittance = PickExp<kLanes>(-m.sigma_t * f.connection);
-  s.weight = FiniteOrZero<kLanes>(s.template weight_for<kLanes>(m));
+  s.weight = FiniteOrZero<kLanes>(bare * MediumFactor<kLanes>(m.sigma_s, m.sigma_t, f.scatterings, f.path_length));
 }
 }  // namespace detail
 

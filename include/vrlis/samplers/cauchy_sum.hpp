@@ -26,8 +26,8 @@ class CauchySumAngle {
 
   // A batch's fits and samples in vector lanes (CauchyLobesLanes): out[i] is sample_pdf(u[i])
   // of lane i's query, to rounding. The two-lobe quadratic runs in the lanes, its sines too
-  // (WidenedSinCosLanes: the same order of samples as one query at a time); a lane with fewer
-  // lobes (g = 0, or a flat lobe) is sampled as one query after.
+  // (WidenedSinCosLanes: the same order of samples as one query at a time), and so does a lane
+  // without lobes (g = 0); one with a single lobe (the other flat) is sampled as one query after.
   template <int kSize>
   using TargetLanes = typename PhaseProduct<Real>::template Lanes<kSize, false>;
   template <int kSize>
@@ -42,11 +42,13 @@ class CauchySumAngle {
     WidenedSinCosLanes(turn, lanes, sin, cos);
     for (int i = 0; i < lanes; ++i) {
       const Real w = target.width[i];
-      out[i] = SampleQuadratic<true>(fits.lobe(0, i, w), fits.lobe(1, i, w), w, fits.mass[0][i] + fits.mass[1][i],
-                                     {sin[i], cos[i]});
+      const SegmentSample<Real> two = SampleQuadratic<true>(fits.lobe(0, i, w), fits.lobe(1, i, w), w,
+                                                            fits.mass[0][i] + fits.mass[1][i], {sin[i], cos[i]});
+      const bool none = fits.count[i] == 0;  // uniform, as sample_pdf (g = 0: every lane)
+      out[i] = {SelectLanes(none, u[i] * w, two.t), SelectLanes(none, 1 / w, two.pdf)};
     }
     for (int i = 0; i < lanes; ++i)
-      if (fits.count[i] != 2) out[i] = CauchySumAngle(fits.lobes(i, target.width[i]), target.width[i]).sample_pdf(u[i]);
+      if (fits.count[i] == 1) out[i] = CauchySumAngle(fits.lobes(i, target.width[i]), target.width[i]).sample_pdf(u[i]);
   }
 
   Real sample(Real u) const {
