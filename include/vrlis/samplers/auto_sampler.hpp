@@ -115,12 +115,12 @@ Real LobeRangeRatioBound(Real g) {
   return a < 1 ? r * r * r : std::numeric_limits<Real>::infinity();
 }
 
-// Kantorovich's bound on the relative variance of a weight whose max / min ratio is rho
-// (branch-free: it runs in lanes too).
-template <typename Real>
+// Kantorovich's bound on the relative variance of a weight whose max / min ratio is rho.
+// kLanes: branch-free, for a loop over a batch's queries (lane_math.hpp).
+template <bool kLanes = false, typename Real>
 Real UniformVarianceBound(Real rho) {
   constexpr Real kInf = std::numeric_limits<Real>::infinity();
-  return SelectLanes(rho < kInf, Sqr(rho - 1) / (4 * rho), kInf);
+  return Pick<kLanes>(rho < kInf, Sqr(rho - 1) / (4 * rho), kInf);
 }
 
 // 1 - z e^z E1(z) for z > 0 (Abramowitz and Stegun 5.1.53 below one, 5.1.56 above, both
@@ -180,32 +180,32 @@ struct AutoRule {
     const T fit = 1 + T(kFitResidual);
     return {equiangular_moment * T(kCost[0]), transmittance_moment * fit * T(kCost[1]), fit * T(kCost[2])};
   }
-  // Ties keep the cheaper model (selects, not branches: it runs in lanes too).
-  template <typename T>
+  // Ties keep the cheaper model. kLanes (here and below): branch-free, as in ChooseLanes.
+  template <bool kLanes = false, typename T>
   static AutoModel Cheapest(const std::array<T, 3>& score) {
-    const bool novak = score[1] < score[0], full = score[2] < SelectLanes(novak, score[1], score[0]);
+    const bool novak = score[1] < score[0], full = score[2] < Pick<kLanes>(novak, score[1], score[0]);
     return AutoModel(2 * int(full) + int(novak & !full));
   }
   // A bound of equiangular's second moment from a bound `phases` of the phase product's ratio
   // and the transmittance's ratio and moment: Kantorovich's on the whole target, or the
   // transmittance's moment times phases^2 (f <= max(phases) T, f >= min(phases) T), which
   // stays finite on an unbounded segment.
-  template <typename T>
+  template <bool kLanes = false, typename T>
   static T MomentBound(T phases, T transmittance_ratio, T transmittance_moment) {
-    return std::min(1 + UniformVarianceBound(phases * transmittance_ratio), Sqr(phases) * transmittance_moment);
+    return std::min(1 + UniformVarianceBound<kLanes>(phases * transmittance_ratio), Sqr(phases) * transmittance_moment);
   }
   // The early-outs, which look at no lobe and never change a decision. Every prediction of
   // equiangular's second moment is at least the transmittance's moment, so FullProduct wins
   // whenever it beats that floor and Novák (whose score depends on that moment alone).
-  template <typename T>
+  template <bool kLanes = false, typename T>
   static bool FullProductSuffices(T transmittance_moment) {
-    return Cheapest(Scores(transmittance_moment, transmittance_moment)) == AutoModel::FullProduct;
+    return Cheapest<kLanes>(Scores(transmittance_moment, transmittance_moment)) == AutoModel::FullProduct;
   }
   // Equiangular wins whenever a bound of its moment from any bound of the phases' ratio is no
   // more than the cheapest fit's best case (relative variance 0 at Novák's cost).
-  template <typename T>
+  template <bool kLanes = false, typename T>
   static bool EquiangularSuffices(T phases, T transmittance_ratio, T transmittance_moment) {
-    return MomentBound(phases, transmittance_ratio, transmittance_moment) <= T(kCost[1]);
+    return MomentBound<kLanes>(phases, transmittance_ratio, transmittance_moment) <= T(kCost[1]);
   }
 
   // Equiangular's predicted second moment: MomentBound with the phases' exact ratio; for a
@@ -266,9 +266,9 @@ class AutoAngle {
     Real ratio[kSize], moment[kSize];
     int undecided = 0;
     for (int i = 0; i < lanes; ++i) {
-      ratio[i] = ExpLanes(sigma_t * depth[i]), moment[i] = 1 + UniformVarianceBound(ratio[i]);
-      const bool equiangular = AutoRule::EquiangularSuffices(phases_bound, ratio[i], moment[i]);
-      const bool full = AutoRule::FullProductSuffices(moment[i]);
+      ratio[i] = ExpLanes(sigma_t * depth[i]), moment[i] = 1 + UniformVarianceBound<true>(ratio[i]);
+      const bool equiangular = AutoRule::EquiangularSuffices<true>(phases_bound, ratio[i], moment[i]);
+      const bool full = AutoRule::FullProductSuffices<true>(moment[i]);
       models[i] = AutoModel(2 * int(full & !equiangular));
       undecided += int(!equiangular & !full);
     }
@@ -292,8 +292,8 @@ class AutoAngle {
       const Real lo = SelectLanes(((below > 0) & (below < width)) | ((above > 0) & (above < width)),
                                   point(g >= 0 ? Real(1) : Real(0)), std::min(p0, p1));
       const Real phases = std::max(s0, s1) / std::min(s0, s1) * (hi / lo);
-      models[i] = AutoRule::Cheapest(AutoRule::Scores(
-          AutoRule::MomentBound(SelectLanes(phases > 0, phases, kInf), ratio[i], moment[i]), moment[i]));
+      models[i] = AutoRule::Cheapest<true>(AutoRule::Scores(
+          AutoRule::MomentBound<true>(SelectLanes(phases > 0, phases, kInf), ratio[i], moment[i]), moment[i]));
     }
   }
 
