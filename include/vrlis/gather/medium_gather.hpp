@@ -196,8 +196,10 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
             models[i] = AutoAngle<Real>::Choose(q, AngleDomain<Real>(q, frames[i]));
           }
       }
-      for (int i = 0; i < lanes; ++i)  // (nothing sampled: the cheapest)
-        models[i] = (i < n) & detail::Usable(SegmentSample<Real>{vt[i], vpdf[i]}) ? models[i] : AutoModel::Equiangular;
+      for (int i = 0; i < lanes; ++i) {  // (nothing sampled: the cheapest)
+        const bool usable = detail::Usable(SegmentSample<Real>{vt[i], vpdf[i]}), sampled = (i < n) & usable;
+        models[i] = sampled ? models[i] : AutoModel::Equiangular;
+      }
       SegmentSample<Real> d[kSize];
       AutoAngle<Real>::template SampleLanes<kSize>(models, frames, vrl.dx, vrl.dy, vrl.dz, camera.dir, medium.g,
                                                    medium.sigma_t, u, lanes, d);
