@@ -107,7 +107,8 @@ TEST_CASE("SqrtLanes is within 3 ulp (float) and 1 ulp (double) over the normal 
 }
 
 TEST_CASE("SelectLanes picks either operand bit for bit (float and double)", "[lib][lane_math]") {
-  for (float a : {0.0f, -0.0f, 1.5f, -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::denorm_min()}) {
+  constexpr float kInf = std::numeric_limits<float>::infinity(), kTiny = std::numeric_limits<float>::denorm_min();
+  for (float a : {0.0f, -0.0f, 1.5f, -kInf, kTiny}) {
     CHECK(std::signbit(vrlis::SelectLanes(true, a, 2.0f)) == std::signbit(a));
     CHECK(vrlis::SelectLanes(true, a, 2.0f) == a);
     CHECK(vrlis::SelectLanes(false, 2.0f, a) == a);

@@ -107,7 +107,8 @@ bool Usable(SegmentSample<Real> s) {
 // The weight is weight_for's from the values written, not read back from s (a read after a
 // write of the same struct stopped GCC vectorising the loop).
 template <bool kLanes = false, typename Real>
-[[gnu::always_inline]] inline void Finish(GatherSample<Real>& s, const IntegrandFactors<Real>& f, const Medium<Real>& m, Real pdf) {
+[[gnu::always_inline]] inline void Finish(GatherSample<Real>& s, const IntegrandFactors<Real>& f, const Medium<Real>& m,
+                                          Real pdf) {
   const Real bare = FiniteOrZero<kLanes>(f.bare / pdf);
   s.bare_weight = bare;
   s.path_length = f.path_length;

@@ -306,7 +306,8 @@ class AutoAngle {
                           const Real* axis_x, const Real* axis_y, const Real* axis_z, Vec3<Real> dir, Real g,
                           Real sigma_t, const Real* u, int lanes, SegmentSample<Real>* out) {
     int novak = 0, full = 0;  // how many lanes took each fit (counted branch-free)
-    for (int i = 0; i < lanes; ++i) novak += int(models[i] == AutoModel::Novak), full += int(models[i] == AutoModel::FullProduct);
+    for (int i = 0; i < lanes; ++i)
+      novak += int(models[i] == AutoModel::Novak), full += int(models[i] == AutoModel::FullProduct);
     if (novak + full < lanes)
       for (int i = 0; i < lanes; ++i)
         if (models[i] == AutoModel::Equiangular) out[i] = UniformAngle<Real>(frames.width[i]).sample_pdf(u[i]);
