@@ -1,0 +1,23 @@
+#pragma once
+// The generated work table (work_costs.hpp) of the batched gathers' lanes in use
+// (core/dispatch.hpp), and a sampler's row of it by name: what both the effort control
+// (work.hpp) and auto's rule (samplers/auto_sampler.hpp) price a sample by.
+#include <string_view>
+
+#include "../core/dispatch.hpp"
+#include "work_costs.hpp"
+
+namespace vrlis {
+namespace detail {
+// The entry of lanes.samplers named `name`, or the costliest where none is (a sampler
+// registered after the constants were measured is priced high rather than free).
+constexpr work_costs::SamplerWork SamplerWorkOf(const work_costs::LaneWork& lanes, std::string_view name) {
+  work_costs::SamplerWork costliest = lanes.samplers[0];
+  for (const work_costs::SamplerWork& w : lanes.samplers) {
+    if (w.name == name) return w;
+    if (w.medium > costliest.medium) costliest = w;
+  }
+  return {name, costliest.medium, costliest.surface};
+}
+}  // namespace detail
+}  // namespace vrlis
