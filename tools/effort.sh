@@ -6,7 +6,8 @@
 # (~95 minutes at --budget 4 on a shared 2-core machine); bench/compare/effort.py tables every
 # method against the best fixed published sampler.
 #   tools/effort.sh            writes out/effort/{seed1,seed2,other,rest,rest-other} and prints the tables
-#   tools/effort.sh --publish  also writes docs/compare/effort.md
+#   tools/effort.sh --publish  also writes docs/compare/effort.md, with every method's cells over the
+#                              page it replaces
 # Other arguments go to every vrl_compare run, e.g. --budget 4. Every run renders at least 8
 # passes per replicate: the control decides from its second pass on a price that settles over
 # the next few, and fog's passes are so long that the budget alone gives it two.
@@ -22,4 +23,4 @@ done
 "${study[@]}" --scenes bidirectional,room --g -0.5,0 --seed 1 --out out/effort/rest "${args[@]}"
 "${study[@]}" --scenes cube,corner,cloud,fog --g -0.5,0,0.9 --seed 1 --out out/effort/rest-other "${args[@]}"
 /usr/bin/python3 bench/compare/effort.py out/effort/seed1 out/effort/seed2 out/effort/other out/effort/rest out/effort/rest-other \
-  ${publish:+--publish "$publish/effort.md"} --command "tools/effort.sh${*:+ $*}"
+  ${publish:+--publish "$publish/effort.md" --previous "$publish/effort.md"} --command "tools/effort.sh${*:+ $*}"

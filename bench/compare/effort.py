@@ -6,11 +6,21 @@ CauchySum, CauchyMixture: every gather taken once), and against it, with a 95% i
 each of our own methods and every method with the effort control on (NAME+effort); the
 error against the reference over the noise (about 1 when unbiased) of every method.
 
-    effort.py RUN... [--publish FILE] [--command CMD]
+    effort.py RUN... [--publish FILE] [--command CMD] [--previous PAGE]
 
-With --publish, also the README's sentence between its effort-summary markers."""
+With --publish, also the README's sentence between its effort-summary markers. With --previous
+(the page this one replaces, e.g. from `git show`), every method's cells against that page's,
+cell by cell.
+
+A method's gains over the cells are far from normal (room's and the cloud's near 4-5, the
+bidirectional scene's and the cube's near 1-2), so their median can sit in the gap between the
+groups: its interval (a bootstrap over the cells) says how far it moves when a few cells do, and
+the cell-by-cell ratio against an earlier run is the comparison that does not move so."""
 import argparse
+import math
 import os
+import random
+import re
 import statistics
 import sys
 
@@ -24,6 +34,17 @@ SUFFIX = "+effort"
 def interval(j):
     """(point, low, high) of a ratio the study wrote (bench/compare/efficiency.hpp)."""
     return j["point"], j["low"], j["high"]
+
+
+def median_interval(values, resamples=2000):
+    """The median and a 95% bootstrap interval of it over the cells (seeded: the page is a function of its runs)."""
+    rng = random.Random(1)
+    medians = sorted(statistics.median(rng.choices(values, k=len(values))) for _ in range(resamples))
+    return statistics.median(values), medians[int(0.025 * resamples)], medians[int(0.975 * resamples) - 1]
+
+
+def geomean(values):
+    return math.exp(statistics.fmean(math.log(v) for v in values))
 
 
 def cell(r):
@@ -78,7 +99,7 @@ def tables(runs):
                  if n in by_name(r) and n + SUFFIX in by_name(r)]
             if not g:
                 continue
-            gains.append(f"| `{n}` | {statistics.median(g):.2f} | {min(g):.2f}-{max(g):.2f} |")
+            gains.append(f"| `{n}` | {cell(median_interval(g))} | {geomean(g):.2f} | {min(g):.2f}-{max(g):.2f} |")
     cells = {n: v for n, v in medians.items() if v}
     ranked = sorted((n for n in cells if n.endswith(SUFFIX)), key=lambda n: -statistics.median(cells[n]))
     all_gains = [by_name(r)[n + SUFFIX]["to_without_effort"]["point"] for run in runs for r in run for n in fixed
@@ -95,14 +116,55 @@ def tables(runs):
     return rows, error_table + errors, summary, gains, worst_error, sentence
 
 
+def published_cells(page):
+    """{(study, seed): {method: point}} from a published page's per-study table."""
+    out, names = {}, []
+    for line in page.splitlines():
+        if line.startswith("| study |"):
+            names = re.findall(r"`([^`]+)`", line)
+        elif names and re.match(r"\| \S+ g = ", line):
+            parts = [p.strip() for p in line.strip("|").split("|")]
+            points = [float(m.group(1)) for p in parts if (m := re.match(r"\**([\d.]+) \(", p))]
+            if len(points) == len(names):
+                out[(parts[0], parts[1])] = dict(zip(names, points))
+    return out
+
+
+def against_previous(runs, page):
+    """Every method's cells over the previous page's, cell by cell: median and geometric mean of the ratio."""
+    before = published_cells(page)
+    ratios = {}
+    for run in runs:
+        for r in run:
+            old = before.get((f"{r['scene']} g = {round(r['g'], 4)}", str(r["seed"])), {})
+            for n, s in by_name(r).items():
+                if old.get(n):
+                    ratios.setdefault(n, []).append(s["to_best_published"]["point"] / old[n])
+    return [f"| `{n}` | {cell(median_interval(v))} | {geomean(v):.2f} | {len(v)} |" for n, v in ratios.items()]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--publish")
     ap.add_argument("--command", default="tools/effort.sh")
+    ap.add_argument("--previous", help="the published page this run replaces")
     a = ap.parse_args()
     runs = [studies(r) for r in a.runs]
     rows, errors, summary, gains, worst, sentence = tables(runs)
+    previous = []
+    if a.previous:
+        with open(a.previous) as f:
+            previous = [
+                "Against the page this one replaced, cell by cell (each method's efficiency over its cell's best fixed "
+                "published sampler here, over the same on that page; the best fixed published sampler itself may "
+                "have changed between the two):",
+                "",
+                "| method | median ratio (95% interval) | geometric mean | cells |",
+                "|---|---|---|---|",
+                *against_previous(runs, f.read()),
+                "",
+            ]
     page = "\n".join([
         "# The effort control against the best fixed sampler",
         "",
@@ -121,12 +183,14 @@ def main():
         "|---|---|---|",
         *summary,
         "",
-        "The effort control's own gain, `NAME+effort` over `NAME` (median and range over the cells):",
+        "The effort control's own gain, `NAME+effort` over `NAME` over the cells: the median with a 95% "
+        "bootstrap interval over the cells, the geometric mean and the range:",
         "",
-        "| method | median | range |",
-        "|---|---|---|",
+        "| method | median (95% interval) | geometric mean | range |",
+        "|---|---|---|---|",
         *gains,
         "",
+        *previous,
         "## Per study",
         "",
         *rows,

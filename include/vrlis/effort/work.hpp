@@ -8,24 +8,10 @@
 #include <array>
 #include <string_view>
 
-#include "../core/dispatch.hpp"
 #include "../method.hpp"
-#include "work_costs.hpp"
+#include "lanes_work.hpp"
 
 namespace vrlis {
-namespace detail {
-// The entry of lanes.samplers named `name`, or the costliest where none is (a sampler
-// registered after the constants were measured is priced high rather than free).
-constexpr work_costs::SamplerWork SamplerWorkOf(const work_costs::LaneWork& lanes, std::string_view name) {
-  work_costs::SamplerWork costliest = lanes.samplers[0];
-  for (const work_costs::SamplerWork& w : lanes.samplers) {
-    if (w.name == name) return w;
-    if (w.medium > costliest.medium) costliest = w;
-  }
-  return {name, costliest.medium, costliest.surface};
-}
-}  // namespace detail
-
 // The counted work of one path of the batched gathers' lanes, its samplers' looked up by
 // index (built at compile time: a gather's batch looks its sampler up by index, not by name).
 struct CountedWork {

@@ -23,6 +23,7 @@
 #include <utility>
 #include <variant>
 
+#include "../effort/lanes_work.hpp"
 #include "equiangular.hpp"
 #include "full_product.hpp"
 #include "novak.hpp"
@@ -160,13 +161,31 @@ double TransmittanceMoment(const SegmentQuery<Real>& q, const AngleDomain<Real>&
 // The models `auto` chooses from, cheapest first.
 enum class AutoModel { Equiangular, Novak, FullProduct };
 
+// The models' costs of one gather sample relative to equiangular's: the counted work of the
+// batched gathers on the lanes in use (effort/work_costs.hpp, the effort control's prices), of
+// the medium gathers' or of the surface gathers' (whose fits run one query at a time and cost
+// more against equiangular's sample; a surface point's lobe is a clamped cosine).
+struct AutoCosts {
+  double novak, full_product;
+
+  static constexpr AutoCosts Of(const work_costs::LaneWork& lanes, bool surface) {
+    auto cost = [&](std::string_view name) {
+      const work_costs::SamplerWork w = detail::SamplerWorkOf(lanes, name);
+      return surface ? w.surface : w.medium;
+    };
+    const double equiangular = cost(EquiangularEntry::kName);
+    return {cost(NovakEntry::kName) / equiangular, cost(FullProductEntry::kName) / equiangular};
+  }
+  // Of the gathers at a point whose lobe is `kind` (a clamped cosine: the surface gathers').
+  static AutoCosts InUse(LobeKind kind) {
+    static constexpr AutoCosts kTable[2][2] = {{Of(work_costs::kBuilt, false), Of(work_costs::kBuilt, true)},
+                                               {Of(work_costs::kAvx2, false), Of(work_costs::kAvx2, true)}};
+    return kTable[detail::Avx2LanesInUse()][kind == LobeKind::ClampedCosine];
+  }
+};
+
 // What auto's rule assumes (docs/maths.md#auto).
 struct AutoRule {
-  // Cost of one whole medium-to-medium gather estimate (step one, step two, integrand) with
-  // each camera sampler, relative to equiangular: the geometric mean over g of vrlis_bench's
-  // Estimator/<sampler> times of `tools/bench.sh` when the rule was last set (216, 373 and
-  // 438 ns; runs of docs/bench.md move by about 10 %, which moves few decisions).
-  static constexpr double kCost[] = {1.0, 1.72, 2.02};
   // The relative variance a piecewise-linear fit leaves on the part of the target it models:
   // FullProduct's camera-step median relative variance is at most 0.07 at every g of the
   // synthetic map (docs/bench.md); Novák's fit of the phases alone is as close.
@@ -176,9 +195,9 @@ struct AutoRule {
   // second moment W Int f^2 / (Int f)^2 and the transmittance's (TransmittanceMoment). In
   // double one query at a time, in the batch's Real in lanes (AutoAngle::ChooseLanes).
   template <typename T>
-  static std::array<T, 3> Scores(T equiangular_moment, T transmittance_moment) {
+  static std::array<T, 3> Scores(T equiangular_moment, T transmittance_moment, const AutoCosts& costs) {
     const T fit = 1 + T(kFitResidual);
-    return {equiangular_moment * T(kCost[0]), transmittance_moment * fit * T(kCost[1]), fit * T(kCost[2])};
+    return {equiangular_moment, transmittance_moment * fit * T(costs.novak), fit * T(costs.full_product)};
   }
   // Ties keep the cheaper model. kLanes (here and below): branch-free, as in ChooseLanes.
   template <bool kLanes = false, typename T>
@@ -198,14 +217,14 @@ struct AutoRule {
   // equiangular's second moment is at least the transmittance's moment, so FullProduct wins
   // whenever it beats that floor and Novák (whose score depends on that moment alone).
   template <bool kLanes = false, typename T>
-  static bool FullProductSuffices(T transmittance_moment) {
-    return Cheapest<kLanes>(Scores(transmittance_moment, transmittance_moment)) == AutoModel::FullProduct;
+  static bool FullProductSuffices(T transmittance_moment, const AutoCosts& costs) {
+    return Cheapest<kLanes>(Scores(transmittance_moment, transmittance_moment, costs)) == AutoModel::FullProduct;
   }
   // Equiangular wins whenever a bound of its moment from any bound of the phases' ratio is no
   // more than the cheapest fit's best case (relative variance 0 at Novák's cost).
   template <bool kLanes = false, typename T>
-  static bool EquiangularSuffices(T phases, T transmittance_ratio, T transmittance_moment) {
-    return MomentBound<kLanes>(phases, transmittance_ratio, transmittance_moment) <= T(kCost[1]);
+  static bool EquiangularSuffices(T phases, T transmittance_ratio, T transmittance_moment, const AutoCosts& costs) {
+    return MomentBound<kLanes>(phases, transmittance_ratio, transmittance_moment) <= T(costs.novak);
   }
 
   // Equiangular's predicted second moment: MomentBound with the phases' exact ratio; for a
@@ -241,12 +260,13 @@ class AutoAngle {
     double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
                    : q.lobe.kind == LobeKind::None          ? 1.0
                                                             : std::numeric_limits<double>::infinity();
-    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point, ratio, moment))
+    const AutoCosts costs = AutoCosts::InUse(q.lobe.kind);
+    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point, ratio, moment, costs))
       return AutoModel::Equiangular;
-    if (AutoRule::FullProductSuffices(moment)) return AutoModel::FullProduct;
+    if (AutoRule::FullProductSuffices(moment, costs)) return AutoModel::FullProduct;
     std::optional<PhaseProduct<Real>> own;
     const PhaseProduct<Real>& built = (phase ? *phase : own).emplace(q, dom);
-    return AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, built, ratio, moment), moment));
+    return AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, built, ratio, moment), moment, costs));
   }
 
   // Choose for a batch of the medium gathers' queries in vector lanes (their point lobe a
@@ -263,12 +283,13 @@ class AutoAngle {
                           AutoModel* models) {
     constexpr Real kInf = std::numeric_limits<Real>::infinity();
     const Real phases_bound = Sqr(LobeRangeRatioBound(g));
+    const AutoCosts costs = AutoCosts::InUse(LobeKind::HenyeyGreenstein);
     Real ratio[kSize], moment[kSize];
     int undecided = 0;
     for (int i = 0; i < lanes; ++i) {
       ratio[i] = ExpLanes(sigma_t * depth[i]), moment[i] = 1 + UniformVarianceBound<true>(ratio[i]);
-      const bool equiangular = AutoRule::EquiangularSuffices<true>(phases_bound, ratio[i], moment[i]);
-      const bool full = AutoRule::FullProductSuffices<true>(moment[i]);
+      const bool equiangular = AutoRule::EquiangularSuffices<true>(phases_bound, ratio[i], moment[i], costs);
+      const bool full = AutoRule::FullProductSuffices<true>(moment[i], costs);
       models[i] = AutoModel(2 * int(full & !equiangular));
       undecided += int(!equiangular & !full);
     }
@@ -293,7 +314,7 @@ class AutoAngle {
                                   point(g >= 0 ? Real(1) : Real(0)), std::min(p0, p1));
       const Real phases = std::max(s0, s1) / std::min(s0, s1) * (hi / lo);
       models[i] = AutoRule::Cheapest<true>(AutoRule::Scores(
-          AutoRule::MomentBound<true>(SelectLanes(phases > 0, phases, kInf), ratio[i], moment[i]), moment[i]));
+          AutoRule::MomentBound<true>(SelectLanes(phases > 0, phases, kInf), ratio[i], moment[i]), moment[i], costs));
     }
   }
 
