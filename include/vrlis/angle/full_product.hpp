@@ -40,7 +40,10 @@ class FullProductTarget {
   static constexpr Real kRelativeFloor = Real(1e-3);
 
   FullProductTarget(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
-      : phase_(q, dom),
+      : FullProductTarget(PhaseProduct<Real>(q, dom), q, dom) {}
+  // With q's phase product built already (auto's rule builds it to choose).
+  FullProductTarget(const PhaseProduct<Real>& phase, const SegmentQuery<Real>& q, const AngleDomain<Real>& dom)
+      : phase_(phase),
         pole_(SinCosLanes(phase_.lower_pole() / 2)),  // pole_.cos = cos(x_a / 2)
         sigma_h_(q.sigma_t * dom.h()),
         depth_scale_(sigma_h_ / pole_.cos),

@@ -75,10 +75,13 @@ double ClampedCosineSecondMoment(const AngleDomain<Real>& dom, const PhaseProduc
   for (int k = -1; k <= 1; ++k) {
     double lo = std::max(a, 2 * pi * k - pi / 2), hi = std::min(a + w, 2 * pi * k + pi / 2);
     if (!(hi > lo)) continue;
-    lo -= 2 * pi * k;
-    hi -= 2 * pi * k;
-    i1 += std::sin(hi) - std::sin(lo);
-    i2 += (hi - lo) / 2 + (std::sin(2 * hi) - std::sin(2 * lo)) / 4;
+    // By the sum-to-product formulas about the window's middle m and half width d: no
+    // difference of nearly equal sines on a narrow window, and one sine and cosine of each
+    // (libm's sincos) instead of four sines.
+    const double m = (hi + lo) / 2 - 2 * pi * k, d = (hi - lo) / 2;
+    const double sin_m = std::sin(m), cos_m = std::cos(m), sin_d = std::sin(d), cos_d = std::cos(d);
+    i1 += 2 * cos_m * sin_d;                                     // sin(hi) - sin(lo)
+    i2 += d + (cos_m - sin_m) * (cos_m + sin_m) * sin_d * cos_d;  // (hi - lo) / 2 + (sin 2hi - sin 2lo) / 4
   }
   return i1 > 0 ? w * i2 / (i1 * i1) : std::numeric_limits<double>::infinity();
 }
@@ -99,6 +102,29 @@ Real TransmittanceRangeRatio(const SegmentQuery<Real>& q) {
   if (!(q.sigma_t > 0)) return 1;
   if (!std::isfinite(q.tmax)) return std::numeric_limits<Real>::infinity();
   return std::exp(q.sigma_t * DepthGrowth(q.point, q.origin, q.dir, q.tmin, q.tmax));
+}
+
+// For a bounded segment and a clamped-cosine point lobe (a diffuse surface point), an upper
+// bound of the phase product's ratio over the interval from both lobes at the segment's ends,
+// without the angle domain: the segment lobe is monotone in theta, so its ratio is that of its
+// end values; the cosine, where positive at both ends, is concave between them (the interval
+// is at most pi wide), so its minimum is at an end and its maximum at most 1. Infinite where
+// the cosine is not positive at both ends. The margin covers the rounding of these values
+// against the angle domain's (the early-out it feeds must never change a decision).
+template <typename Real>
+double ClampedCosineEndsRatioBound(const SegmentQuery<Real>& q) {
+  double base[2], cosine[2];  // HenyeyGreensteinBase of the segment lobe, and the cosine
+  const double g = double(q.g);
+  for (int k = 0; k < 2; ++k) {
+    const Vec3<Real> to_point = q.point - (q.origin + (k ? q.tmax : q.tmin) * q.dir);
+    const double inv_length = 1 / std::sqrt(double(Dot(to_point, to_point)));
+    base[k] = 1 + g * g - 2 * g * double(Dot(q.dir, to_point)) * inv_length;
+    cosine[k] = -double(Dot(q.lobe.axis, to_point)) * inv_length;
+  }
+  const double low = std::min(cosine[0], cosine[1]);
+  if (!(low > 0)) return std::numeric_limits<double>::infinity();
+  const double lobes = std::max(base[0], base[1]) / std::min(base[0], base[1]);  // (max / min of HG)^(2/3)
+  return lobes * std::sqrt(lobes) / low * (1 + 1e-3);
 }
 
 // An upper bound of the ratio max / min of the whole target (phases x transmittance).
@@ -260,9 +286,13 @@ class AutoAngle {
     double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
                    : q.lobe.kind == LobeKind::None          ? 1.0
                                                             : std::numeric_limits<double>::infinity();
+    // At a surface point the lobes' end values bound the phases far closer than the lobes'
+    // largest ratios do, and decide most of the surface gathers' queries without a lobe angle.
+    const double phases = q.lobe.kind == LobeKind::ClampedCosine && std::isfinite(q.tmax)
+                              ? ClampedCosineEndsRatioBound(q)
+                              : double(LobeRangeRatioBound(q.g)) * point;
     const AutoCosts costs = AutoCosts::InUse(q.lobe.kind);
-    if (AutoRule::EquiangularSuffices(double(LobeRangeRatioBound(q.g)) * point, ratio, moment, costs))
-      return AutoModel::Equiangular;
+    if (AutoRule::EquiangularSuffices(phases, ratio, moment, costs)) return AutoModel::Equiangular;
     if (AutoRule::FullProductSuffices(moment, costs)) return AutoModel::FullProduct;
     std::optional<PhaseProduct<Real>> own;
     const PhaseProduct<Real>& built = (phase ? *phase : own).emplace(q, dom);
@@ -352,7 +382,9 @@ class AutoAngle {
     std::optional<PhaseProduct<Real>> phase;
     switch (Choose(q, dom, &phase)) {
       case AutoModel::Novak: return Dist(std::in_place_index<1>, *phase, dom.width());
-      case AutoModel::FullProduct: return Dist(std::in_place_index<2>, q, dom);
+      case AutoModel::FullProduct:
+        if (phase) return Dist(std::in_place_index<2>, FullProductTarget<Real>(*phase, q, dom), dom.width());
+        return Dist(std::in_place_index<2>, q, dom);
       case AutoModel::Equiangular: break;
     }
     return Dist(std::in_place_index<0>, q, dom);
