@@ -1,7 +1,7 @@
 #pragma once
-// The generated work table (work_costs.hpp) of the batched gathers' lanes in use
-// (core/dispatch.hpp), and a sampler's row of it by name: what both the effort control
-// (work.hpp) and auto's rule (samplers/auto_sampler.hpp) price a sample by.
+// A sampler's row of the generated work tables (work_costs.hpp, one per path of the batched
+// gathers' lanes; core/dispatch.hpp says which is in use) by name: what both the effort
+// control (work.hpp) and auto's rule (samplers/auto_sampler.hpp) price a sample by.
 #include <string_view>
 
 #include "../core/dispatch.hpp"
