@@ -2,10 +2,10 @@
 """The effort control's work constants from vrlis_bench's JSON (tools/work_costs.sh).
 
 Writes include/vrlis/effort/work_costs.hpp (the library's operations, on each path of the
-batched gathers' lanes, core/dispatch.hpp) and
+batched gathers' lanes, core/dispatch.hpp),
 integration/include/vrlis_integration/renderer_work.hpp (the example renderer's rays, its
-calls' and its pixels' own work); a unit is a nanosecond of the machine measured
-(docs/maths.md#effort-work).
+calls' and its pixels' own work) and docs/maths.md's table of them (between its work-costs
+markers); a unit is a nanosecond of the machine measured (docs/maths.md#effort-work).
 
   work_costs.py AVX2.json BUILT.json [--write]
       AVX2.json: vrlis_bench on the widest lanes (the default); BUILT.json: the library's
@@ -16,6 +16,7 @@ import math
 import platform
 import statistics
 import sys
+import textwrap
 from datetime import date
 from pathlib import Path
 
@@ -110,6 +111,54 @@ def lanes_initialiser(c):
     return f"{{\n    {{\n{rows}\n    }},\n    {values}}}"
 
 
+def docs_table(lanes, r):
+    """docs/maths.md's table of the constants and its sentence of the samplers' (between its work-costs markers)."""
+    avx2, built = lanes
+    pair = lambda c, a, b, digits: f"{c[a]:.{digits}f}, {c[b]:.{digits}f}"  # noqa: E731
+    rows = [
+        ("a sample of the batched medium / surface gather, after VrlPoint", "library", "`samplers`", "below", "below"),
+        ("VrlMarginal's fit, per sample that takes it", "library", "`marginal_fit`",
+         f"{avx2['marginal_fit']:.1f}", f"{built['marginal_fit']:.1f}"),
+        ("a sample's density over the mixture (`measure_mixture`)", "library", "`mixture_density`",
+         f"{avx2['mixture_density']:.1f}", f"{built['mixture_density']:.1f}"),
+        ("a quick, a tight medium bound, per VRL", "library", "`medium_quick_bound`, `medium_tight_bound`",
+         pair(avx2, "medium_quick_bound", "medium_tight_bound", 2), pair(built, "medium_quick_bound", "medium_tight_bound", 2)),
+        ("a quick, a tight surface bound, per VRL", "library", "`surface_quick_bound`, `surface_tight_bound`",
+         pair(avx2, "surface_quick_bound", "surface_tight_bound", 2),
+         pair(built, "surface_quick_bound", "surface_tight_bound", 2)),
+        ("a call's loop, per VRL considered and per call", "library", "`vrl`", f"{avx2['vrl']:.2f}", f"{built['vrl']:.2f}"),
+        ("a decision per VRL of a deciding call, beyond its bounds", "library", "`decision`",
+         f"{avx2['decision']:.2f}", f"{built['decision']:.2f}"),
+        ("a visit of a contributing sample: occlusion ray and connection (`EffortCall::visit_work`'s default)", "library",
+         "`work_costs::kVisit`", f"{r['kOccluded'] + r['kConnect']:.1f}", ""),
+        ("a closest-hit, an occlusion ray", "renderer (`Scene::Intersect`, `Occluded`)",
+         "`renderer_work::kIntersect`, `kOccluded`", pair(r, "kIntersect", "kOccluded", 1), ""),
+        ("a gather sample's connection beyond its ray", "renderer", "`renderer_work::kConnect`", f"{r['kConnect']:.1f}", ""),
+        ("a pixel's own work beyond its paths", "renderer", "`renderer_work::kPixel`", f"{r['kPixel']:.1f}", ""),
+        ("a path vertex (camera, remainder, light) beyond its rays", "renderer", "`renderer_work::kVertex`",
+         f"{r['kVertex']:.1f}", ""),
+    ]
+    table = ["| operation | counted by | constant (`LaneWork` field) | AVX2 | built |", "|---|---|---|---|---|"]
+    table += ["| " + " | ".join(row) + " |" for row in rows]
+    built_of = {n: (m, s) for n, m, s in built["samplers"]}
+    order = ["equiangular", "novak", "full-product", "cauchy-mixture", "cauchy-sum", "auto"]
+    names = [n for n in order if n in built_of] + [n for n, _, _ in avx2["samplers"] if n not in order]
+    avx2_of = {n: (m, s) for n, m, s in avx2["samplers"]}
+    parts = [f"{'`auto`' if n == 'auto' else n} {avx2_of[n][0]:.1f} / {avx2_of[n][1]:.1f} "
+             f"({built_of[n][0]:.1f} / {built_of[n][1]:.1f})" for n in names]
+    sentence = ("`samplers`, medium / surface, AVX2 (built): " + ", ".join(parts) +
+                " (its rule included; a sampler missing is priced as the costliest).")
+    return "\n".join(table) + "\n\n" + textwrap.fill(sentence, width=100) + "\n"
+
+
+def write_docs(lanes, r):
+    path = ROOT / "docs/maths.md"
+    text = path.read_text()
+    begin = text.index("\n", text.index("<!-- work-costs")) + 1
+    end = text.index("<!-- /work-costs -->")
+    path.write_text(text[:begin] + docs_table(lanes, r) + text[end:])
+
+
 def write(lanes, r, context):
     avx2, built = lanes
     names = [n for n, _, _ in avx2["samplers"]]
@@ -169,6 +218,7 @@ inline constexpr double kVertex = {r['kVertex']:.1f};
 """
     (ROOT / "include/vrlis/effort/work_costs.hpp").write_text(lib)
     (ROOT / "integration/include/vrlis_integration/renderer_work.hpp").write_text(renderer_header)
+    write_docs(lanes, r)
 
 
 def main():
@@ -190,7 +240,8 @@ def main():
         print(f"{k:22s} {v:8.2f}")
     if "--write" in sys.argv[3:]:
         write(lanes, r, context)
-        print("wrote include/vrlis/effort/work_costs.hpp, integration/include/vrlis_integration/renderer_work.hpp")
+        print("wrote include/vrlis/effort/work_costs.hpp, integration/include/vrlis_integration/renderer_work.hpp, "
+              "docs/maths.md's table")
 
 
 if __name__ == "__main__":
