@@ -140,12 +140,8 @@ def docs_table(lanes, r):
     ]
     table = ["| operation | counted by | constant (`LaneWork` field) | AVX2 | built |", "|---|---|---|---|---|"]
     table += ["| " + " | ".join(row) + " |" for row in rows]
-    built_of = {n: (m, s) for n, m, s in built["samplers"]}
-    order = ["equiangular", "novak", "full-product", "cauchy-mixture", "cauchy-sum", "auto"]
-    names = [n for n in order if n in built_of] + [n for n, _, _ in avx2["samplers"] if n not in order]
-    avx2_of = {n: (m, s) for n, m, s in avx2["samplers"]}
-    parts = [f"{'`auto`' if n == 'auto' else n} {avx2_of[n][0]:.1f} / {avx2_of[n][1]:.1f} "
-             f"({built_of[n][0]:.1f} / {built_of[n][1]:.1f})" for n in names]
+    parts = [f"`{n}` {m:.1f} / {s:.1f} ({bm:.1f} / {bs:.1f})"
+             for (n, m, s), (_, bm, bs) in zip(avx2["samplers"], built["samplers"])]  # (write() checks the names match)
     sentence = ("`samplers`, medium / surface, AVX2 (built): " + ", ".join(parts) +
                 " (its rule included; a sampler missing is priced as the costliest).")
     return "\n".join(table) + "\n\n" + textwrap.fill(sentence, width=100) + "\n"

@@ -138,8 +138,8 @@ const Q kSurfaceFacing = [] {
   return q;
 }();
 // Isotropic on unbounded segments, 0.15 and 6 mean free paths from the point. (At 3, equiangular's
-// 1 + V is 2.9 by quadrature against FullProduct's 2.56 at the counted costs, but the unbounded
-// moment's prediction puts it below that: a prediction, not a bound, docs/maths.md#auto.)
+// 1 + V by quadrature is above FullProduct's score at the counted costs, but the unbounded
+// moment's prediction puts it below: a prediction, not a bound, docs/maths.md#auto.)
 const Q kUnboundedThin = vrlis::MediumToMediumQuery<double>({0, 0, 0}, {0, 0, -1}, 0, std::numeric_limits<double>::infinity(),
                                                             {0.5, 0, -2}, {1, 0, 0}, 0, 0.3);
 const Q kUnboundedDense = vrlis::MediumToMediumQuery<double>({0, 0, 0}, {0, 0, -1}, 0, std::numeric_limits<double>::infinity(),
