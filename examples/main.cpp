@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--vrl-bound", vrl_bound, "The VRL gathers take their connections up to this geometry term (1 / r^2; "
                                            "cos / r^2 at a surface), the remainder the excess; inf: the gathers take "
-                                           "all; 0: no light paths, a path tracer; scene: the scene's (1 in corner, "
+                                           "all; 0: no light paths, a path tracer; scene: the scene's (1 in corner and cloud, "
                                            "inf elsewhere); auto: inf, 1 or 0.1, whichever the first two passes "
                                            "price lowest (docs/renderer.md#bound-choice)")
       ->capture_default_str();

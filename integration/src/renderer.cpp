@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <chrono>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -19,14 +20,16 @@
 namespace vrlis::integration {
 namespace {
 
-// Calls f(ray, rng, x, y) for every pixel, in parallel over rows; the random stream of a
-// pixel depends on (seed, pass, pixel) only.
-template <typename F>
-Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f) {
+// Calls f(ray, rng, x, y) for every pixel that `rendered(x, y)` names, in parallel over rows;
+// the random stream of a pixel depends on (seed, pass, pixel) only.
+template <typename F, typename Rendered>
+Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f,
+                  Rendered&& rendered) {
   Film film(s.width, s.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, s.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y) {
       for (int x = 0; x < s.width; ++x) {
+        if (!rendered(x, y)) continue;
         const std::uint64_t pixel = static_cast<std::uint64_t>(y) * s.width + x;
         Rng rng(seed, pass, pixel, StreamPurpose::Camera);
         PixelPoint j;
@@ -44,6 +47,13 @@ Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t see
   });
   return film;
 }
+template <typename F>
+Film ForEachPixel(const Scene& scene, const RenderSettings& s, std::uint64_t seed, std::uint64_t pass, F&& f) {
+  return ForEachPixel(scene, s, seed, pass, std::forward<F>(f), [](int, int) { return true; });
+}
+
+// The effort control's pilot (EffortPrice::PilotDue): numbers of its own, never a pass's.
+constexpr std::uint64_t kPilotPass = ~std::uint64_t(0);
 
 double Since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -52,6 +62,22 @@ double Since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
+  // Before its first price the effort control learns one from a pilot over a quarter of the
+  // pixels, which the image does not keep: taking every gather once in every pixel, as the
+  // first pass did, cost the room scene's 16-pass render half its time
+  // (docs/maths.md#effort-pilot). Its cost is the pass's.
+  if (!(settings_.transport.effort.on && price_.PilotDue())) return RenderPixels(seed, pass, false, stats);
+  PassStats pilot;
+  RenderPixels(seed, kPilotPass, true, &pilot);
+  Film film = RenderPixels(seed, pass, false, stats);
+  if (stats) {
+    stats->vrls += pilot.vrls, stats->gathers += pilot.gathers, stats->vertices += pilot.vertices;
+    stats->seconds += pilot.seconds, stats->work += pilot.work;
+  }
+  return film;
+}
+
+Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilot, PassStats* stats) {
   auto t0 = std::chrono::steady_clock::now();
   // Without a medium there are no light paths, and no VPLs to share the remainder's
   // connections with: the remainder then carries them all.
@@ -76,14 +102,18 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   const vrlis::EffortSettings& effort = settings_.transport.effort;
   vrlis::EffortSettings base = effort;
   // VrlMarginal's fits for the top marginal_fraction of the gathers by the earlier passes'
-  // scores; the first pass fits every gather.
+  // scores; the first pass (or the pilot) fits every gather.
   const bool scored = transport.sampling.vrl == vrlis::VrlSamplers::Of<vrlis::VrlMarginalEntry>() &&
                       transport.marginal_fraction < 1;
   if (scored && marginal_scores_.total() > 0) base.marginal_threshold = marginal_scores_.Threshold(transport.marginal_fraction);
   if (effort.on) price_.BeginPass(base);
   tbb::enumerable_thread_specific<vrlis::ScoreOctaves> pass_scores;
   const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
-  Film film = ForEachPixel(scene_, settings_, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
+  // The pilot's pixel points are independent of every pass's (stratified points are a sequence over the passes).
+  RenderSettings pixel_settings = settings_;
+  if (pilot) pixel_settings.pixel_samples = PixelSamples::Independent;
+  auto rendered = [pilot](int x, int y) { return !pilot || vrlis::EffortPrice::InPilot(x, y); };
+  Film film = ForEachPixel(scene_, pixel_settings, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
     const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(settings_.width) + static_cast<std::size_t>(x);
     TransportSettings pixel_transport = transport;
     if (bounds_.active()) pixel_transport.vrl_bound = bounds_.Bound(x, y);
@@ -100,7 +130,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
       if (effort.on) {
         Rng choice(seed, pass, i, StreamPurpose::EffortModel);
         options.effort = price_.Pixel(x, y, [&] { return choice.Uniform(); });
-        // In the first pass a share of the pixels of `auto`, both of a horizontal pair, also
+        // In the pilot a share of the pixels of `auto`, both of a horizontal pair, also
         // gather their VRLs under the accurate model, for the statistics alone
         // (docs/maths.md#effort-accurate).
         const std::uint64_t left = static_cast<std::uint64_t>(y) * settings_.width + static_cast<std::uint64_t>(x - x % 2);
@@ -123,13 +153,16 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
                       std::memory_order_relaxed);
     vertices.fetch_add(ThreadVertices() - vertices_before, std::memory_order_relaxed);
     return L;
-  });
+  }, rendered);
   double other = 0, work = light_work;
   for (std::size_t i = 0; i < pixels; ++i) other += pixel_work[i], work += pixel_work[i] + gather_work[i];
   std::vector<double> values(effort.on || bounds_.active() ? pixels : 0);
-  for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::sqrt(film.pixels[i].MeanSquare());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = rendered(int(i % std::size_t(settings_.width)), int(i / std::size_t(settings_.width)))
+                    ? std::sqrt(film.pixels[i].MeanSquare())
+                    : std::numeric_limits<double>::quiet_NaN();
   if (effort.on) price_.EndPass(values, other);
-  if (bounds_.active()) {
+  if (bounds_.active() && !pilot) {
     for (std::size_t i = 0; i < pixels; ++i) pixel_work[i] += gather_work[i];
     bounds_.EndPass(settings_.width, values, pixel_work, light_work);
   }

@@ -14,7 +14,10 @@
 //     price.EndPass(values);
 //   }
 //
-// Pixel values are a scalar per pixel (our renderer: the RMS of its RGB), in the units the
+// A renderer may first render a pilot (while PilotDue()): the pixels InPilot names, a quarter,
+// on numbers of no pass, their values handed to EndPass (the others' not finite) and not kept
+// in the image; the first pass then is already priced (docs/maths.md#effort-pilot). Pixel
+// values are a scalar per pixel (our renderer: the RMS of its RGB), in the units the
 // visitors' contributions and the weights are in. The variance of one pass's pixel estimate
 // is averaged over pixels with the largest thousandth left out (a few fireflies must not flip
 // decisions); per 8 x 8 tile of pixels, the price learns what a whole call and the remainder
@@ -77,8 +80,8 @@ class EffortPrice {
   // Shares of pixels deciding before a price (their bounds calibrate it), and once priced
   // before any pass decided (a trial of whether decisions pay).
   static constexpr double kCalibrate = 1.0 / 8, kTrial = 1.0 / 4;
-  // The share of horizontal pixel pairs of the first pass that also gather under the accurate
-  // model (Pairs), and the margin a change to or from that model must pay (its variance and
+  // The share of horizontal pixel pairs that also gather under the accurate model in the first
+  // pass (Pairs), and the margin a change to or from that model must pay (its variance and
   // the rule's differ many-fold, and a render that flips between them pays for the flip).
   static constexpr double kPairShare = 1.0 / 4, kAccurateMargin = 0.8;
 
@@ -90,7 +93,7 @@ class EffortPrice {
         pixels_(static_cast<std::size_t>(std::max(width, 0)) * static_cast<std::size_t>(std::max(height, 0))),
         tiles_x_((width + kTile - 1) / kTile),
         visit_work_(visit_work) {
-    for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_);
+    for (Passes& p : passes_of_) p.sum.resize(pixels_), p.sum_sq.resize(pixels_), p.taken.resize(pixels_);
     const std::size_t tiles = static_cast<std::size_t>(std::max(tiles_x_, 0)) *
                               static_cast<std::size_t>(std::max((height + kTile - 1) / kTile, 0));
     for (int kind = 0; kind < 2; ++kind) {
@@ -128,7 +131,7 @@ class EffortPrice {
       e.price = price_[k], e.within = Within(k), e.call_demand = call_demand_[k][Tile(x, y)];
       e.model = Model(k, u[k]);
       e.decide = Decide(k, u[2 + k]);
-      e.measure_mixture = e.model == EffortModel::Chosen && (u[4 + k] < kMeasure || model_[k] != EffortModel::Chosen);
+      e.measure_mixture = e.model == EffortModel::Chosen && (u[4 + k] < FirstPass(kMeasure) || model_[k] != EffortModel::Chosen);
     }
     p.pair = p.medium;
     p.pair.decide = p.pair.measure_mixture = false;
@@ -140,16 +143,25 @@ class EffortPrice {
     return p;
   }
 
+  // Whether the next pass is the pilot, and whether pixel (x, y) takes part in it: horizontal
+  // pairs (x even and x + 1, for the neighbour variance), one pair in four along each row,
+  // staggered from row to row, so that each 8 x 8 tile holds 16 (docs/maths.md#effort-pilot).
+  // The shares of pixels above are of the image's; the first pass takes each over kPilotShare,
+  // the share of the pixels a pilot renders, so that as many pixels take it.
+  static constexpr double kPilotShare = 1.0 / 4;
+  bool PilotDue() const { return passes_ == 0; }
+  static bool InPilot(int x, int y) { return (x / 2 + y) % 4 == 0; }
+
   // Whether a pixel of `auto` also gathers its medium-to-medium VRLs under the accurate model,
   // for the statistics alone (PixelEffort::Pair), u uniform in [0, 1) and the same for
-  // horizontal neighbours (x and x + 1, x even): in the first kMinPasses passes, a kPairShare
+  // horizontal neighbours (x and x + 1, x even): in the pilot, a kPairShare
   // of them. The image rendered and the image had those gathers taken the accurate model give
   // both models' variances by one estimator (docs/maths.md#effort-accurate).
-  bool Pairs(double u) const { return passes_ < kMinPasses && u < kPairShare; }
+  bool Pairs(double u) const { return passes_ < kMinPasses && u < FirstPass(kPairShare); }
 
   // One finished pass: each pixel's value (row-major, width x height; another count throws
-  // std::invalid_argument) and the work the renderer counted outside its gather calls (the
-  // records count theirs).
+  // std::invalid_argument; not finite: not rendered) and the work the renderer counted outside
+  // its gather calls (the records count theirs).
   void EndPass(const std::vector<double>& values, double other_work = 0) {
     if (values.size() != pixels_) throw std::invalid_argument("vrlis::EffortPrice::EndPass: one value per pixel");
     Passes& into = passes_of_[passes_ >= kMinPasses];
@@ -197,6 +209,7 @@ class EffortPrice {
       const double v = values[i];
       if (!std::isfinite(v)) continue;
       into.sum[i] += v, into.sum_sq[i] += v * v;
+      ++into.taken[i], ++into.rendered;
     }
     if (pairs > 0 && width_ >= 2) MeasureAccurate(values);
     into.work += work;
@@ -240,15 +253,19 @@ class EffortPrice {
     ModelChange cheapest{EffortModel::Cheapest}, mixture{EffortModel::Mixture}, accurate{EffortModel::Accurate};
   };
   const ModelWeighing& model_weighing(GatherKind kind) const { return weighing_[static_cast<int>(kind)]; }
+  // The same at the first refresh, the only one that weighs the accurate model.
+  const ModelWeighing& first_weighing(GatherKind kind) const { return first_weighing_[static_cast<int>(kind)]; }
 
  private:
   // Of the first kMinPasses passes, or of those after: per pixel, the sums of a pass's value
-  // and its square, and the passes' work; per kind, the pixels that called its gathers and
+  // and its square and the passes that rendered it; the pixels rendered over all passes, and
+  // the passes' work; per kind, the pixels that called its gathers and
   // those that decided them under a price, and the samples below the accurate tier and those
   // of them the cheapest model and the mixture took.
   struct Passes {
     std::vector<double> sum, sum_sq;
-    double work = 0;
+    std::vector<int> taken;
+    double rendered = 0, work = 0;
     int count = 0;
     double called[2] = {0, 0}, decided[2] = {0, 0};
     double switchable[2] = {0, 0}, cheapest[2] = {0, 0}, mixture[2] = {0, 0};
@@ -257,6 +274,7 @@ class EffortPrice {
   std::size_t Tile(int x, int y) const {
     return static_cast<std::size_t>(y / kTile) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(x / kTile);
   }
+  double FirstPass(double share) const { return passes_ < kMinPasses ? share / kPilotShare : share; }
   double Within(int k) const {
     const EffortRecord& g = gathers_[k];
     return g.split_second > 0 ? std::min(1.0, g.split_within / g.split_second) : 1;  // 1 before any split
@@ -265,14 +283,15 @@ class EffortPrice {
   // with probability kExplore where that is another; before any price the cheapest model and
   // the mixture each with probability kPilot (their work is measured once).
   EffortModel Model(int k, double u) const {
-    if (passes_ < kMinPasses) return u < kPilot ? EffortModel::Cheapest : u < 2 * kPilot ? EffortModel::Mixture : EffortModel::Chosen;
+    const double pilot = FirstPass(kPilot);
+    if (passes_ < kMinPasses) return u < pilot ? EffortModel::Cheapest : u < 2 * pilot ? EffortModel::Mixture : EffortModel::Chosen;
     return u < kExplore ? EffortModel::Chosen : model_[k];
   }
   // Whether a pixel's gathers are decided one by one: before a price with probability
   // kCalibrate (unpriced, a decided gather is taken once and only its bounds cost); priced
   // but before any pass decided, kTrial; then where decisions pay, else kExplore.
   bool Decide(int k, double u) const {
-    if (passes_ < kMinPasses) return u < kCalibrate;
+    if (passes_ < kMinPasses) return u < FirstPass(kCalibrate);
     if (!(passes_of_[1].decided[k] > 0)) return u < kTrial;
     return decisions_pay_[k] || u < kExplore;
   }
@@ -288,7 +307,7 @@ class EffortPrice {
     return sum / double(kept);
   }
   // Half the squared difference of horizontal neighbours (x and x + 1, x even; edges overstate
-  // it), trimmed; of the pairs whose first pixel `use` flags, if given.
+  // it), trimmed; of the pairs whose first pixel `use` flags, if given, and both rendered.
   double NeighbourVariance(const std::vector<double>& values, const std::vector<bool>* use = nullptr) const {
     std::vector<double> pairs;
     for (int y = 0; y < height_; ++y)
@@ -296,6 +315,7 @@ class EffortPrice {
         const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
         if (use && !(*use)[i]) continue;
         const double d = values[i] - values[i + 1];
+        if (!std::isfinite(d)) continue;
         pairs.push_back(d * d / 2);
       }
     return TrimmedMean(std::move(pairs));
@@ -321,17 +341,21 @@ class EffortPrice {
     const double n = p.count;
     double variance = 0;
     if (n >= 2) {
-      std::vector<double> pixels(pixels_);
-      for (std::size_t i = 0; i < pixels_; ++i) {  // each pixel's variance over the passes
-        const double mean = p.sum[i] / n;
-        pixels[i] = std::max(0.0, (p.sum_sq[i] - n * mean * mean) / (n - 1));
+      std::vector<double> pixels;
+      for (std::size_t i = 0; i < pixels_; ++i) {  // each pixel's variance over the passes that rendered it
+        const double k = p.taken[i], mean = k > 0 ? p.sum[i] / k : 0;
+        if (k >= 2) pixels.push_back(std::max(0.0, (p.sum_sq[i] - k * mean * mean) / (k - 1)));
       }
       variance = TrimmedMean(std::move(pixels));
     } else {
       if (width_ < 2) return;
-      variance = NeighbourVariance(p.sum);
+      std::vector<double> once(p.sum);  // (the pixels not rendered are not neighbours)
+      for (std::size_t i = 0; i < pixels_; ++i)
+        if (p.taken[i] == 0) once[i] = std::numeric_limits<double>::quiet_NaN();
+      variance = NeighbourVariance(once);
     }
-    variance_ = variance, pixel_cost_ = p.work / (n * double(pixels_));
+    if (!(p.rendered > 0)) return;
+    variance_ = variance, pixel_cost_ = p.work / p.rendered;
     for (int kind = 0; kind < 2; ++kind) {
       const EffortRecord& g = gathers_[kind];
       const EffortRecord& u = uncontrolled_[kind];
@@ -347,6 +371,7 @@ class EffortPrice {
     }
     for (int kind = 0; kind < 2; ++kind) {
       weighing_[kind] = WeighModels(kind);
+      if (passes_ == kMinPasses) first_weighing_[kind] = weighing_[kind];
       model_[kind] = ChooseModel(kind, weighing_[kind]);
       decisions_pay_[kind] = DecisionsPay(kind);
       for (std::size_t tile = 0; tile < call_demand_[kind].size(); ++tile) call_demand_[kind][tile] = CallDemand(kind, tile);
@@ -393,7 +418,7 @@ class EffortPrice {
     // Per pixel and pass, what a model changes against the rule were every sample below the
     // accurate tier taken with it: the variance it adds (estimated from the rule's samples) and
     // its work over the rule's; and its share of those samples in the measured passes.
-    const double samples = switchable / (p.count * double(pixels_));
+    const double samples = switchable / p.rendered;
     const double rule_work = pilot.model_work[kRule] / pilot_rule;
     auto change = [&](ModelChange& c, double excess, double measured, int model, double share) {
       const double taken = pilot.model_samples[model];
@@ -448,7 +473,7 @@ class EffortPrice {
     const double loop = once.vrls > 0 ? (once.work - once.sample_work) / once.vrls : 0;
     const double work = (d.work - d.sample_work) - d.vrls * loop + (d.samples - d.vrls) * sample_cost;
     const Passes& p = measured();
-    const double scale = p.called[k] / (p.count * double(pixels_)) / decided_pixels;
+    const double scale = p.called[k] / p.rendered / decided_pixels;
     const double dv = scale * (d.roulette_excess + Within(k) * d.split_excess), dt = scale * work;
     const double decided_share = p.called[k] > 0 ? p.decided[k] / p.called[k] : 0;
     const double v_once = variance_ - decided_share * dv, t_once = pixel_cost_ - decided_share * dt;
@@ -473,7 +498,7 @@ class EffortPrice {
   double pair_samples_[kEffortModels] = {}, pair_work_[kEffortModels] = {};  // the pairs' samples and work, by model
   double price_[2] = {0, 0};
   EffortModel model_[2] = {EffortModel::Chosen, EffortModel::Chosen};
-  ModelWeighing weighing_[2];
+  ModelWeighing weighing_[2], first_weighing_[2];
   bool decisions_pay_[2] = {true, true};
   // The variance of a pixel per pass had the medium-to-medium gathers of the first pass taken
   // the accurate model, less that of the image rendered; NaN before a pass paired them.

@@ -83,6 +83,9 @@ class VrlRenderer : public Renderer {
   const BoundChoice& bound_choice() const { return bounds_; }
 
  private:
+  // A pass, or the effort control's pilot (EffortPrice::InPilot's pixels, its film not kept).
+  Film RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilot, PassStats* stats);
+
   vrlis::EffortPrice price_;
   BoundChoice bounds_;
   vrlis::ScoreOctaves marginal_scores_;  // of the passes rendered so far
