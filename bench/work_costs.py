@@ -114,29 +114,32 @@ def lanes_initialiser(c):
 def docs_table(lanes, r):
     """docs/maths.md's table of the constants and its sentence of the samplers' (between its work-costs markers)."""
     avx2, built = lanes
-    pair = lambda c, a, b, digits: f"{c[a]:.{digits}f}, {c[b]:.{digits}f}"  # noqa: E731
+
+    def both(*keys, digits):  # the AVX2 and the built column of the fields `keys`
+        return tuple(", ".join(f"{c[k]:.{digits}f}" for k in keys) for c in (avx2, built))
+
+    def renderer_only(*keys):
+        return ", ".join(f"{r[k]:.1f}" for k in keys), ""
+
     rows = [
         ("a sample of the batched medium / surface gather, after VrlPoint", "library", "`samplers`", "below", "below"),
-        ("VrlMarginal's fit, per sample that takes it", "library", "`marginal_fit`",
-         f"{avx2['marginal_fit']:.1f}", f"{built['marginal_fit']:.1f}"),
+        ("VrlMarginal's fit, per sample that takes it", "library", "`marginal_fit`", *both("marginal_fit", digits=1)),
         ("a sample's density over the mixture (`measure_mixture`)", "library", "`mixture_density`",
-         f"{avx2['mixture_density']:.1f}", f"{built['mixture_density']:.1f}"),
+         *both("mixture_density", digits=1)),
         ("a quick, a tight medium bound, per VRL", "library", "`medium_quick_bound`, `medium_tight_bound`",
-         pair(avx2, "medium_quick_bound", "medium_tight_bound", 2), pair(built, "medium_quick_bound", "medium_tight_bound", 2)),
+         *both("medium_quick_bound", "medium_tight_bound", digits=2)),
         ("a quick, a tight surface bound, per VRL", "library", "`surface_quick_bound`, `surface_tight_bound`",
-         pair(avx2, "surface_quick_bound", "surface_tight_bound", 2),
-         pair(built, "surface_quick_bound", "surface_tight_bound", 2)),
-        ("a call's loop, per VRL considered and per call", "library", "`vrl`", f"{avx2['vrl']:.2f}", f"{built['vrl']:.2f}"),
-        ("a decision per VRL of a deciding call, beyond its bounds", "library", "`decision`",
-         f"{avx2['decision']:.2f}", f"{built['decision']:.2f}"),
+         *both("surface_quick_bound", "surface_tight_bound", digits=2)),
+        ("a call's loop, per VRL considered and per call", "library", "`vrl`", *both("vrl", digits=2)),
+        ("a decision per VRL of a deciding call, beyond its bounds", "library", "`decision`", *both("decision", digits=2)),
         ("a visit of a contributing sample: occlusion ray and connection (`EffortCall::visit_work`'s default)", "library",
          "`work_costs::kVisit`", f"{r['kOccluded'] + r['kConnect']:.1f}", ""),
         ("a closest-hit, an occlusion ray", "renderer (`Scene::Intersect`, `Occluded`)",
-         "`renderer_work::kIntersect`, `kOccluded`", pair(r, "kIntersect", "kOccluded", 1), ""),
-        ("a gather sample's connection beyond its ray", "renderer", "`renderer_work::kConnect`", f"{r['kConnect']:.1f}", ""),
-        ("a pixel's own work beyond its paths", "renderer", "`renderer_work::kPixel`", f"{r['kPixel']:.1f}", ""),
+         "`renderer_work::kIntersect`, `kOccluded`", *renderer_only("kIntersect", "kOccluded")),
+        ("a gather sample's connection beyond its ray", "renderer", "`renderer_work::kConnect`", *renderer_only("kConnect")),
+        ("a pixel's own work beyond its paths", "renderer", "`renderer_work::kPixel`", *renderer_only("kPixel")),
         ("a path vertex (camera, remainder, light) beyond its rays", "renderer", "`renderer_work::kVertex`",
-         f"{r['kVertex']:.1f}", ""),
+         *renderer_only("kVertex")),
     ]
     table = ["| operation | counted by | constant (`LaneWork` field) | AVX2 | built |", "|---|---|---|---|---|"]
     table += ["| " + " | ".join(row) + " |" for row in rows]

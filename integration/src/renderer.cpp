@@ -70,10 +70,7 @@ Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* 
   PassStats pilot;
   RenderPixels(seed, kPilotPass, true, &pilot);
   Film film = RenderPixels(seed, pass, false, stats);
-  if (stats) {
-    stats->vrls += pilot.vrls, stats->gathers += pilot.gathers, stats->vertices += pilot.vertices;
-    stats->seconds += pilot.seconds, stats->work += pilot.work;
-  }
+  if (stats) *stats += pilot;
   return film;
 }
 

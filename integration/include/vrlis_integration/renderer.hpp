@@ -29,6 +29,11 @@ inline const std::vector<float> kAutoBounds = {kUnbounded, 1.f, 0.1f};
 struct PassStats {
   std::uint64_t vrls = 0, gathers = 0, vertices = 0;  // vertices: the camera pass's (work.hpp)
   double seconds = 0, work = 0;
+
+  PassStats& operator+=(const PassStats& o) {
+    vrls += o.vrls, gathers += o.gathers, vertices += o.vertices, seconds += o.seconds, work += o.work;
+    return *this;
+  }
 };
 
 struct RenderSettings {
