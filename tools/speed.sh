@@ -257,9 +257,30 @@ for c, m in zip(cams, samplers):
 here, rounds = parts[f"Camera/{base_cam}/g:0.50"], t("new", base_cam, 0.5)
 print(f"\nMachine phase: Camera/{base_name} at g = 0.5 took {here:.0f} ns in this table's run and {rounds:.0f} ns in the "
       f"interleaved rounds above ({here / rounds:.2f}x); this table's absolute times carry that factor.")
+
+
+def short_symbol(line, width=160):
+    """A profile line with what its symbol nests two brackets deep elided: a batched gather's
+    lambda otherwise spells out every type it nests, a page long."""
+    kept, depth = [], 0
+    for ch in line:
+        if ch in "<(":
+            depth += 1
+            if depth <= 2:
+                kept.append(ch + ("\u2026" if depth == 2 else ""))
+        elif ch in ">)":
+            depth = max(depth - 1, 0)
+            if depth <= 1:
+                kept.append(ch)
+        elif depth <= 1:
+            kept.append(ch)
+    text = "".join(kept)
+    return text if len(text) <= width else text[:width - 1] + "\u2026"
+
+
 for scene, sampler in profiled:
     try:
-        prof = open(f"{out}/runs/perf_{scene}.txt").read().rstrip()
+        prof = "\n".join(map(short_symbol, open(f"{out}/runs/perf_{scene}.txt").read().rstrip().splitlines()))
     except OSError:
         continue
     print(f"\nProfile of `vrl_render --scene {scene} --sampler {sampler} --threads 1` (perf, self time: by library, "
