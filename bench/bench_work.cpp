@@ -40,13 +40,11 @@ void Bound(benchmark::State& state, bool surface, bool tight) {
     const MediumGatherQuery<float>& q = pools.configs[b * kBoundBatch].query;
     float* quick = tight ? nullptr : quick_out;
     float* tight_bound = tight ? tight_out : nullptr;
-    detail::WithWidestLanes([&] {
-      if (surface)
-        SurfaceGatherBounds(q.camera.origin, q.camera.dir, &vrls[b * kBoundBatch], kBoundBatch, q.medium, quick,
-                            tight_bound);
-      else
-        MediumGatherBounds(q.camera, &vrls[b * kBoundBatch], kBoundBatch, q.medium, quick, tight_bound);
-    });
+    if (surface)
+      SurfaceGatherBounds(q.camera.origin, q.camera.dir, &vrls[b * kBoundBatch], kBoundBatch, q.medium, quick,
+                          tight_bound);
+    else
+      MediumGatherBounds(q.camera, &vrls[b * kBoundBatch], kBoundBatch, q.medium, quick, tight_bound);
     benchmark::DoNotOptimize(quick_out);
     benchmark::DoNotOptimize(tight_out);
     b = b + 1 == blocks ? 0 : b + 1;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "../core/dispatch.hpp"
 #include "../core/gather_query.hpp"
 #include "../core/lane_math.hpp"
 #include "../core/phase.hpp"
@@ -163,13 +164,16 @@ template <typename Real, typename Quick, typename Tight>
 // MediumGatherQuickBound into quick[i] and MediumGatherBound into tight[i], each if set, for
 // vrls[0, count), count <= kBoundBatch, to rounding (the lanes take square roots by Newton
 // steps): one VRL at a time, a call's decisions cost as much as its gathers, and the VRLs are
-// independent, so each bound runs as one loop over lanes that compilers vectorise.
+// independent, so each bound runs as one loop over lanes that compilers vectorise, on the
+// widest lanes the processor has (core/dispatch.hpp), as the gathers and their counted work.
 template <typename Real>
 void MediumGatherBounds(const RaySegment<Real>& camera, const VrlSegment<Real>* vrls, int count, const Medium<Real>& m,
                         Real* quick, Real* tight) {
-  detail::BoundLanes(vrls, count, quick, tight, [&](const VrlSegment<Real>& vrl) {
-    return MediumGatherQuickBound<true>(camera, vrl, m);
-  }, [&](const VrlSegment<Real>& vrl) { return MediumGatherBound<true>(camera, vrl, m); });
+  detail::WithWidestLanes([&] {
+    detail::BoundLanes(vrls, count, quick, tight, [&](const VrlSegment<Real>& vrl) {
+      return MediumGatherQuickBound<true>(camera, vrl, m);
+    }, [&](const VrlSegment<Real>& vrl) { return MediumGatherBound<true>(camera, vrl, m); });
+  });
 }
 
 // A bound of the medium-to-surface gather's mean, Int f dv (surface_gather.hpp, without the
@@ -217,8 +221,10 @@ template <bool kLanes = false, typename Real>
 template <typename Real>
 void SurfaceGatherBounds(Vec3<Real> point, Vec3<Real> normal, const VrlSegment<Real>* vrls, int count,
                          const Medium<Real>& m, Real* quick, Real* tight) {
-  detail::BoundLanes(vrls, count, quick, tight, [&](const VrlSegment<Real>& vrl) {
-    return SurfaceGatherQuickBound<true>(point, normal, vrl, m);
-  }, [&](const VrlSegment<Real>& vrl) { return SurfaceGatherBound<true>(point, normal, vrl, m); });
+  detail::WithWidestLanes([&] {
+    detail::BoundLanes(vrls, count, quick, tight, [&](const VrlSegment<Real>& vrl) {
+      return SurfaceGatherQuickBound<true>(point, normal, vrl, m);
+    }, [&](const VrlSegment<Real>& vrl) { return SurfaceGatherBound<true>(point, normal, vrl, m); });
+  });
 }
 }  // namespace vrlis
