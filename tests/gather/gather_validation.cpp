@@ -118,7 +118,7 @@ TEST_CASE("gather methods are named camera[+vrl] and parse back") {
   CHECK_FALSE(vrlis::ParseGatherSamplers(""));
 }
 
-TEST_CASE("Medium's factories name the coefficients; a misfill is rejected by name") {
+TEST_CASE("Medium's factories name the coefficients and reject a misfill by name") {
   using E = vrlis::QueryError;
   using M = vrlis::Medium<float>;
   const M absorbing = M::FromAbsorptionScattering(0.5f, 0.1f, 0.3f);

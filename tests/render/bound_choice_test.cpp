@@ -92,7 +92,7 @@ vi::RenderSettings CloudSettings(const vrlis::scenes::BuiltScene& built) {
   return s;
 }
 
-TEST_CASE("BoundChoice: a render that chooses keeps the image's mean; one that reads its own pass does not",
+TEST_CASE("BoundChoice: a render that chooses keeps the image's mean but not one that reads its own pass",
           "[render][bound]") {
   auto built = vrlis::scenes::BuildScene("cloud", {});
   REQUIRE(built);
