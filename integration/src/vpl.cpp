@@ -7,23 +7,15 @@
 
 namespace vrlis::integration {
 
-VplSet::VplSet(std::vector<Vpl> vpls) : vpls_(std::move(vpls)) {
-  double total = 0;
-  for (std::size_t i = 0; i < vpls_.size(); ++i) {
-    const double w = vpls_[i].flux.Average();
-    if (!(w > 0) || !std::isfinite(w)) continue;
-    total += w;
-    cdf_.push_back(total);
-    index_.push_back(i);
-  }
-  for (double& c : cdf_) c /= total;
+namespace {
+std::vector<double> Fluxes(const std::vector<Vpl>& vpls) {
+  std::vector<double> flux(vpls.size());
+  for (std::size_t i = 0; i < vpls.size(); ++i) flux[i] = vpls[i].flux.Average();
+  return flux;
 }
+}  // namespace
 
-std::pair<const Vpl*, float> VplSet::Sample(float u) const {
-  const auto k = static_cast<std::size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), double(u)) - cdf_.begin());
-  const std::size_t i = std::min(k, cdf_.size() - 1);
-  return {&vpls_[index_[i]], static_cast<float>(cdf_[i] - (i > 0 ? cdf_[i - 1] : 0.0))};
-}
+VplSet::VplSet(std::vector<Vpl> vpls) : vpls_(std::move(vpls)), choice_(Fluxes(vpls_)) {}
 
 Spectrum GatherVpls(const Scene& scene, Vec3f p, Vec3f nf, Spectrum albedo, const VplSet& vpls, int samples,
                     float bound, Rng& rng) {

@@ -12,6 +12,7 @@
 
 #include <vrlis/method.hpp>
 
+#include "alias_table.hpp"
 #include "common.hpp"
 #include "gather.hpp"
 #include "scene.hpp"
@@ -29,14 +30,16 @@ class VplSet {
  public:
   VplSet() = default;
   explicit VplSet(std::vector<Vpl> vpls);
-  bool empty() const { return cdf_.empty(); }
+  bool empty() const { return choice_.empty(); }
   // The VPL for the uniform u in [0, 1) and the probability of choosing it.
-  std::pair<const Vpl*, float> Sample(float u) const;
+  std::pair<const Vpl*, float> Sample(float u) const {
+    const AliasTable::Pick pick = choice_.Sample(u);
+    return {&vpls_[pick.index], pick.probability};
+  }
 
  private:
   std::vector<Vpl> vpls_;
-  std::vector<double> cdf_;  // of the VPLs with positive flux, ending at 1
-  std::vector<std::size_t> index_;
+  AliasTable choice_;  // by flux: a gather takes several per shading point
 };
 
 // Radiance reflected towards the viewer by the diffuse point p (normal nf facing the viewer,
