@@ -33,13 +33,4 @@ AliasTable::AliasTable(const std::vector<double>& weights) {
   // What is left holds share 1 up to rounding: it keeps its own item (keep = 1 from above).
 }
 
-AliasTable::Pick AliasTable::Sample(float u) const {
-  // In double: n u stays below n for every float u < 1.
-  const double scaled = double(u) * double(cells_.size());
-  const std::size_t c = std::size_t(scaled);
-  const Cell& cell = cells_[c < cells_.size() ? c : cells_.size() - 1];
-  const bool own = scaled - double(c) < double(cell.keep);
-  return own ? Pick{cell.item, cell.probability} : Pick{cell.alias, cell.alias_probability};
-}
-
 }  // namespace vrlis::integration

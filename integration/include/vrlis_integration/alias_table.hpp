@@ -22,7 +22,14 @@ class AliasTable {
   };
   // The item (its index among the weights) for the uniform u in [0, 1): n u's integer part
   // picks a cell, its fraction the cell's own item or its alias.
-  Pick Sample(float u) const;
+  Pick Sample(float u) const {
+    // In double: n u stays below n for every float u < 1.
+    const double scaled = double(u) * double(cells_.size());
+    const std::size_t c = std::size_t(scaled);
+    const Cell& cell = cells_[c < cells_.size() ? c : cells_.size() - 1];
+    return scaled - double(c) < double(cell.keep) ? Pick{cell.item, cell.probability}
+                                                  : Pick{cell.alias, cell.alias_probability};
+  }
 
  private:
   struct Cell {
