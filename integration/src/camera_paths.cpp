@@ -14,10 +14,15 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
   const HomogeneousMedium& m = scene.medium;
   const PathTracer remainder(scene, tr);
   const vrlis::PixelEffort& effort = gathers.effort;
-  const double remainder_rate = effort.remainder_rate;
-  vrlis::RemainderRecord* remainder_stats = effort.medium.on ? &effort.record->remainder : nullptr;
-  // The VPLs seen from a camera segment are unpriced; theirs is a point-and-line query like the
-  // medium-to-surface gather's, and they take that gather's model (auto's rule without one).
+  // With the control on, the split sub-estimators take the price's rates and add to its records.
+  const bool priced = effort.medium.on;
+  const double remainder_rate = effort.split_rate(vrlis::SplitKind::Remainder, 1);
+  vrlis::SplitRecord* remainder_stats = priced ? &(*effort.record)[vrlis::SplitKind::Remainder] : nullptr;
+  auto vpl_connections = [&](vrlis::SplitKind kind, Spectrum beta) {
+    return VplConnections{effort.split_rate(kind, tr.vpl_samples), beta, priced ? &(*effort.record)[kind] : nullptr};
+  };
+  // The VPLs seen from a camera segment take the medium-to-surface gather's model (theirs is a
+  // point-and-line query like its; auto's rule without one); the price sets their count only.
   const vrlis::SegmentChoice vpl_sampler =
       vrlis::SegmentSamplerFor(tr.sampling.segment, vrlis::ChooseEffortModel(effort.surface, 1));
   Spectrum L, beta(1.f);
@@ -30,7 +35,9 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
       CameraSegment seg{ray, iv};
       if (tr.medium_to_medium) L += beta * GatherMediumToMedium(tr.sampling, scene, seg, vrls, rng, beta, gathers);
       if (tr.direct && tr.single_scattering) L += beta * SingleScattering(tr.sampling.segment, scene, seg, rng);
-      if (tr.surface_to_medium) L += beta * GatherVpls(vpl_sampler, scene, seg, vpls, tr.vpl_samples, tr.vpl_bound, rng);
+      if (tr.surface_to_medium)
+        L += beta * GatherVpls(vpl_sampler, scene, seg, vpls, vpl_connections(vrlis::SplitKind::VplMedium, beta),
+                               tr.vpl_bound, rng);
       if (tr.indirect)  // a medium vertex by free flight, continued by path tracing
         L += SplitRemainder(remainder_rate, rng, remainder_stats, [&] {
           float d = iv.a - std::log(1 - rng.Uniform()) / m.SigmaT();
@@ -58,7 +65,9 @@ Spectrum VrlRadiance(const Scene& scene, const TransportSettings& tr, const std:
     if (tr.medium_to_surface && m.Present())
       L += beta * GatherMediumToSurface(tr.sampling.segment, scene, hit.p, nf, mat.albedo, vrls, rng, beta, gathers);
     if (tr.direct) L += beta * DirectSurface(scene, hit.p, nf, mat.albedo);
-    if (tr.surface_to_surface) L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, tr.vpl_samples, tr.vpl_bound, rng);
+    if (tr.surface_to_surface)
+      L += beta * GatherVpls(scene, hit.p, nf, mat.albedo, vpls, vpl_connections(vrlis::SplitKind::VplSurface, beta),
+                             tr.vpl_bound, rng);
     if (tr.indirect)
       L += SplitRemainder(remainder_rate, rng, remainder_stats, [&] {
         float u1 = rng.Uniform(), u2 = rng.Uniform();

@@ -16,6 +16,10 @@
 //   statistics estimate the path's second moment; without its 1 / rate it is rejected;
 // - the remainder's demand follows the price: above 2 paths per camera vertex in corner, whose
 //   remainder holds most of the variance, and under a quarter of that in room, whose holds almost none;
+// - split VPL connections (SplitConnections) keep their gather's mean at rates 2, 2.6 and 13.3
+//   and their statistics estimate one connection's variance within it; without the 1 / rate
+//   it is rejected; their demand follows the price: above 8 at the cube's surfaces, whose VPLs
+//   hold most of its variance, and under an eighth of that in room's;
 // - `auto` takes a model cheaper than its rule where the variance it adds is worth less than
 //   the time it saves: in room (gathers without variance) equiangular or the mixture, and not
 //   equiangular in the bidirectional scene at g = 0.9;
@@ -194,12 +198,12 @@ TEST_CASE("effort keeps the image's mean", "[render][effort]") {
 
 TEST_CASE("effort: a split remainder keeps its mean and learns its second moment", "[render][effort]") {
   // A "path" worth u, uniform in [0, 1): mean 1/2, second moment 1/3. At rates below, at and
-  // above one the split sum keeps the mean and RemainderRecord's m2 per launch estimates 1/3;
+  // above one the split sum keeps the mean and SplitRecord's m2 per launch estimates 1/3;
   // the sabotage (the split sum without its 1 / rate) must be rejected.
   const double rate = GENERATE(0.4, 1.0, 2.6);
   INFO("rate " << rate);
   vrlis::integration::Rng rng(7, 0, 0, vrlis::integration::StreamPurpose::Camera);
-  vrlis::RemainderRecord stats;
+  vrlis::SplitRecord stats;
   vrlis::RunningMoments kept, sabotaged;
   for (int k = 0; k < 40000; ++k) {
     const float y = vrlis::integration::SplitRemainder(rate, rng, &stats, [&] {
@@ -210,18 +214,58 @@ TEST_CASE("effort: a split remainder keeps its mean and learns its second moment
   }
   auto z = [](const vrlis::RunningMoments& m, double mean) { return (m.mean() - mean) / m.standard_error(); };
   INFO("z " << z(kept, 0.5) << ", sabotaged z " << z(sabotaged, 0.5) << ", m2 per launch "
-            << stats.m2 / stats.launches << ", paths per launch " << stats.paths / stats.launches);
+            << stats.m2 / stats.launches << ", paths per launch " << stats.samples / stats.launches);
   CHECK(std::abs(z(kept, 0.5)) < 4);
   CHECK(std::abs(stats.m2 / stats.launches - 1.0 / 3) < 0.015);
-  CHECK(std::abs(stats.paths / stats.launches - rate) < 0.02);
+  CHECK(std::abs(stats.samples / stats.launches - rate) < 0.02);
   if (rate != 1) CHECK(std::abs(z(sabotaged, 0.5)) > 4);
+}
+
+TEST_CASE("effort: split VPL connections keep their gather's mean and learn its within variance", "[render][effort]") {
+  // A "connection" worth 2 u, u uniform in [0, 1), scaled by 1/2 and seen through a path of
+  // throughput 3: a gather's mean 1/2 whatever the rate, a connection's pixel contribution 3 u
+  // of variance 9/12 within the gather. SplitRecord's m2 per launch estimates it; the sabotage
+  // (the gather without its 1 / rate) must be rejected.
+  const double rate = GENERATE(2.0, 2.6, 13.3);
+  INFO("rate " << rate);
+  vrlis::integration::Rng rng(9, 0, 0, vrlis::integration::StreamPurpose::Camera);
+  vrlis::SplitRecord stats;
+  const vrlis::integration::VplConnections connections{rate, vrlis::integration::Spectrum(3.f), &stats};
+  vrlis::RunningMoments kept, sabotaged;
+  for (int k = 0; k < 40000; ++k) {
+    const float y = vrlis::integration::SplitConnections(connections, vrlis::integration::Spectrum(0.5f), rng, [&] {
+      return vrlis::integration::Spectrum(2 * rng.Uniform());
+    }).Average();
+    kept.add(y);
+    sabotaged.add(y * rate / std::floor(rate));
+  }
+  auto z = [](const vrlis::RunningMoments& m, double mean) { return (m.mean() - mean) / m.standard_error(); };
+  INFO("z " << z(kept, 0.5) << ", sabotaged z " << z(sabotaged, 0.5) << ", m2 per launch "
+            << stats.m2 / stats.launches << ", connections per launch " << stats.samples / stats.launches);
+  CHECK(std::abs(z(kept, 0.5)) < 4);
+  CHECK(std::abs(stats.m2 / stats.launches - 0.75) < 0.015);
+  CHECK(std::abs(stats.samples / stats.launches - rate) < 0.02);
+  if (rate != std::floor(rate)) CHECK(std::abs(z(sabotaged, 0.5)) > 4);
+}
+
+TEST_CASE("effort: VPL connections follow the price where they hold the noise", "[render][effort]") {
+  auto mean_demand = [](const char* scene) {
+    return MeanOverPixels(scene, [](const vrlis::EffortPrice& price,
+                                    const vrlis::integration::RenderSettings&, int x, int y) {
+      return price.split_demand(vrlis::SplitKind::VplSurface, x, y);
+    });
+  };
+  const double cube = mean_demand("cube"), room = mean_demand("room");
+  INFO("mean surface-to-surface VPL demand after 5 passes: cube " << cube << ", room " << room);
+  CHECK(cube > 8);          // its VPLs hold most of the variance (docs/compare/decomposition.md)
+  CHECK(room < cube / 8);   // direct light holds almost all of room's
 }
 
 TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
   auto mean_rate = [](const char* scene) {
     return MeanOverPixels(scene, [](const vrlis::EffortPrice& price,
                                     const vrlis::integration::RenderSettings&, int x, int y) {
-      return price.remainder_demand(x, y);
+      return price.split_demand(vrlis::SplitKind::Remainder, x, y);
     });
   };
   const double corner = mean_rate("corner"), room = mean_rate("room");

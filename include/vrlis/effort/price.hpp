@@ -20,7 +20,7 @@
 // values are a scalar per pixel (our renderer: the RMS of its RGB), in the units the
 // visitors' contributions and the weights are in. The variance of one pass's pixel estimate
 // is averaged over pixels with the largest thousandth left out (a few fireflies must not flip
-// decisions); per 8 x 8 tile of pixels, the price learns what a whole call and the remainder
+// decisions); per 8 x 8 tile of pixels, the price learns what a whole call and each split kind
 // are worth.
 #include <algorithm>
 #include <cmath>
@@ -41,14 +41,22 @@ namespace vrlis {
 enum class GatherKind { Medium, Surface };
 
 // One pixel's effort in a pass (EffortPrice::Pixel): the settings of its medium-to-medium and
-// medium-to-surface calls, the statistics-only pair's (EffortPrice::Pairs), the rate of the
-// renderer's remainder paths (RemainderRecord), and the records its calls add to.
+// medium-to-surface calls, the statistics-only pair's (EffortPrice::Pairs), the samples per
+// launch of the renderer's split sub-estimators (SplitKind), and the records its calls add to.
 struct PixelEffort {
   EffortSettings medium, surface, pair;
-  double remainder_rate = 1;
+  // Per SplitKind, the samples per launch the price asks for; NaN before it asks (unpriced, or
+  // the control off): the renderer's own count (split_rate).
+  double split_rates[kSplitKinds] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                                     std::numeric_limits<double>::quiet_NaN()};
   double visit_work = work_costs::kVisit;
   PixelRecord* record = nullptr;
 
+  // Kind k's samples per launch: the price's, or `own` where it asks none.
+  double split_rate(SplitKind k, double own) const {
+    const double r = split_rates[static_cast<int>(k)];
+    return std::isnan(r) ? own : r;
+  }
   template <typename Real>
   EffortCall<Real> Medium(const Real* weights, ScoreOctaves* scores = nullptr) const {
     return {medium, weights, record ? &record->medium : nullptr, scores, visit_work};
@@ -71,9 +79,15 @@ class EffortPrice {
   // pass's neighbouring pixels, the next from the passes over time.
   static constexpr int kMinPasses = 1;
   static constexpr int kTile = 8;  // pixels on a side of the tiles whose calls share a demand
-  // The taken calls, or remainder paths, below which a tile's cost per call (per path) is too
+  // The taken calls, or split samples, below which a tile's cost per call (per sample) is too
   // noisy, and the image's is taken instead.
   static constexpr double kFewInTile = 16;
+  // The fewest samples per launch of each SplitKind once priced. The remainder is split where
+  // it asks for more paths, never rouletted: its paths cost too little where it asks for fewer
+  // (room: 0.3 ms of a 78 ms pass) to repay larger weights. VPL connections: two, so that every
+  // gather measures their within variance; rouletted, corner's variance per pass rose 4.5-17
+  // times (docs/maths.md#effort-split).
+  static constexpr double kSplitFloor[kSplitKinds] = {1, 2, 2};
   // Shares of pixels: exploring the rule where the image takes another model, piloting the
   // cheapest model and the mixture before a price, measuring the mixture under the rule.
   static constexpr double kExplore = 1.0 / 512, kPilot = 1.0 / 16, kMeasure = 1.0 / 32;
@@ -100,8 +114,10 @@ class EffortPrice {
       tiles_[kind].resize(tiles);
       call_demand_[kind].assign(tiles, 1.0);
     }
-    remainder_tiles_.resize(tiles);
-    remainder_demand_.assign(tiles, 1.0);
+    for (int k = 0; k < kSplitKinds; ++k) {
+      split_tiles_[k].resize(tiles);
+      split_demand_[k].assign(tiles, std::numeric_limits<double>::quiet_NaN());
+    }
     records_.resize(pixels_);
   }
 
@@ -136,10 +152,9 @@ class EffortPrice {
     p.pair = p.medium;
     p.pair.decide = p.pair.measure_mixture = false;
     p.pair.model = EffortModel::Accurate;
-    // The remainder is split where it asks for more paths, never rouletted: its paths cost too
-    // little where it asks for fewer (room: 0.3 ms of a 78 ms pass) to repay larger weights.
-    const double demand = remainder_demand_[Tile(x, y)];
-    p.remainder_rate = demand > 1 ? std::min(demand, std::max(1.0, base_.ceiling)) : 1.0;
+    for (int k = 0; k < kSplitKinds; ++k)  // (NaN stays NaN: std::clamp would not keep it)
+      if (const double demand = split_demand_[k][Tile(x, y)]; !std::isnan(demand))
+        p.split_rates[k] = std::clamp(demand, kSplitFloor[k], std::max(kSplitFloor[k], base_.ceiling));
     return p;
   }
 
@@ -167,14 +182,15 @@ class EffortPrice {
     Passes& into = passes_of_[passes_ >= kMinPasses];
     std::vector<EffortRecord> pass_tiles[2][2];  // per kind, undecided or decided, per tile
     for (auto& kind : pass_tiles)
-      for (auto& part : kind) part.resize(remainder_tiles_.size());
-    std::vector<RemainderRecord> pass_remainder(remainder_tiles_.size());
+      for (auto& part : kind) part.resize(split_tiles_[0].size());
+    std::vector<SplitRecord> pass_split[kSplitKinds];
+    for (auto& kind : pass_split) kind.resize(split_tiles_[0].size());
     double work = other_work, pairs = 0;
     for (std::size_t i = 0; i < pixels_; ++i) {
       const PixelRecord& r = records_[i];
       const std::size_t tile = Tile(static_cast<int>(i % static_cast<std::size_t>(width_)),
                                     static_cast<int>(i / static_cast<std::size_t>(width_)));
-      pass_remainder[tile] += r.remainder;
+      for (int k = 0; k < kSplitKinds; ++k) pass_split[k][tile] += r.split[k];
       work += r.medium.work + r.surface.work;
       pairs += r.pair.calls;
       for (int m = 0; m < kEffortModels; ++m) pair_samples_[m] += r.pair.model_samples[m], pair_work_[m] += r.pair.model_work[m];
@@ -188,9 +204,8 @@ class EffortPrice {
       }
     }
     EffortRecord total[2];
-    for (std::size_t tile = 0; tile < remainder_tiles_.size(); ++tile) {
-      remainder_ += pass_remainder[tile];
-      remainder_tiles_[tile] += pass_remainder[tile];
+    for (std::size_t tile = 0; tile < split_tiles_[0].size(); ++tile) {
+      for (int k = 0; k < kSplitKinds; ++k) split_[k] += pass_split[k][tile], split_tiles_[k][tile] += pass_split[k][tile];
       for (int kind = 0; kind < 2; ++kind)
         for (int decided = 0; decided < 2; ++decided) {
           const EffortRecord& p = pass_tiles[kind][decided][tile];
@@ -225,12 +240,13 @@ class EffortPrice {
 
   // What the price learned: the price of a gather (EffortSettings::price), 0 before
   // kMinPasses passes; the within share of split gathers' second moments (EffortSettings::
-  // within); a call's demand at pixel (x, y) (EffortSettings::call_demand); the remainder's
-  // paths per camera vertex there; the image's model; whether decisions pay.
+  // within); a call's demand at pixel (x, y) (EffortSettings::call_demand); a split kind's
+  // samples per launch there before the clamps (NaN before a price); the image's model;
+  // whether decisions pay.
   double price(GatherKind kind) const { return price_[static_cast<int>(kind)]; }
   double within(GatherKind kind) const { return Within(static_cast<int>(kind)); }
   double call_demand(GatherKind kind, int x, int y) const { return call_demand_[static_cast<int>(kind)][Tile(x, y)]; }
-  double remainder_demand(int x, int y) const { return remainder_demand_[Tile(x, y)]; }
+  double split_demand(SplitKind k, int x, int y) const { return split_demand_[static_cast<int>(k)][Tile(x, y)]; }
   EffortModel model(GatherKind kind) const { return model_[static_cast<int>(kind)]; }
   bool decisions_pay(GatherKind kind) const { return decisions_pay_[static_cast<int>(kind)]; }
   int passes() const { return passes_; }
@@ -376,17 +392,18 @@ class EffortPrice {
       decisions_pay_[kind] = DecisionsPay(kind);
       for (std::size_t tile = 0; tile < call_demand_[kind].size(); ++tile) call_demand_[kind][tile] = CallDemand(kind, tile);
     }
-    for (std::size_t tile = 0; tile < remainder_demand_.size(); ++tile) remainder_demand_[tile] = RemainderDemand(tile);
+    for (int k = 0; k < kSplitKinds; ++k)
+      for (std::size_t tile = 0; tile < split_demand_[k].size(); ++tile) split_demand_[k][tile] = SplitFactor(k, tile);
   }
 
-  // EARS's splitting factor of the remainder's paths at a camera vertex of a tile:
-  // sqrt((second moment / work of one path) x (pixel cost / pixel variance)), the work of all
-  // paths while the tile has traced few (docs/maths.md#effort-remainder).
-  double RemainderDemand(std::size_t t) const {
-    const RemainderRecord& tile = remainder_tiles_[t];
-    const RemainderRecord& counted = tile.paths >= kFewInTile ? tile : remainder_;
-    const double cost = counted.paths > 0 ? counted.work / counted.paths : 0;
-    if (!(value_of_time() > 0) || !(cost > 0) || !(tile.launches > 0)) return 1;
+  // EARS's splitting factor of a split kind's samples per launch in a tile:
+  // sqrt((m2 / work of one sample) x (pixel cost / pixel variance)), the work of all the
+  // kind's samples while the tile has taken few (docs/maths.md#effort-split); NaN unknown.
+  double SplitFactor(int k, std::size_t t) const {
+    const SplitRecord& tile = split_tiles_[k][t];
+    const SplitRecord& counted = tile.samples >= kFewInTile ? tile : split_[k];
+    const double cost = counted.samples > 0 ? counted.work / counted.samples : 0;
+    if (!(value_of_time() > 0) || !(cost > 0) || !(tile.launches > 0)) return std::numeric_limits<double>::quiet_NaN();
     return std::sqrt(tile.m2 / tile.launches / cost * value_of_time());
   }
 
@@ -503,9 +520,9 @@ class EffortPrice {
   // The variance of a pixel per pass had the medium-to-medium gathers of the first pass taken
   // the accurate model, less that of the image rendered; NaN before a pass paired them.
   double accurate_change_ = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> call_demand_[2], remainder_demand_;
-  std::vector<RemainderRecord> remainder_tiles_;
-  RemainderRecord remainder_;
+  std::vector<double> call_demand_[2], split_demand_[kSplitKinds];
+  std::vector<SplitRecord> split_tiles_[kSplitKinds];
+  SplitRecord split_[kSplitKinds];
 };
 
 }  // namespace vrlis

@@ -41,24 +41,32 @@ struct EffortRecord {
   }
 };
 
-// A sub-estimator the renderer traces itself and splits by the price (our renderer's
-// path-traced remainder, docs/maths.md#effort-remainder): the points it started from, the
-// paths it traced, their counted work and the sum over the paths of (contribution)^2 / rate,
-// an estimate of the second moment of one path per point.
-struct RemainderRecord {
-  double launches = 0, paths = 0, work = 0, m2 = 0;
-  RemainderRecord& operator+=(const RemainderRecord& o) {
-    launches += o.launches, paths += o.paths, work += o.work, m2 += o.m2;
+// The sub-estimators a renderer samples itself and splits by the price
+// (docs/maths.md#effort-split): our renderer's path-traced remainder, and its VPL connections
+// gathered along camera segments in the medium and at surfaces.
+enum class SplitKind { Remainder, VplMedium, VplSurface };
+inline constexpr int kSplitKinds = 3;
+
+// One kind's launches (the points it started from), the samples they took, their counted work,
+// and the sum over the launches of what one sample adds to a launch's variance that splitting
+// divides: the remainder's second moment of one path (its paths share nothing but their
+// start; per path (contribution)^2 / rate, unbiased whatever the rate), the VPL connections'
+// variance within their gather (they share the pass's VPLs; the connections' sample variance).
+struct SplitRecord {
+  double launches = 0, samples = 0, work = 0, m2 = 0;
+  SplitRecord& operator+=(const SplitRecord& o) {
+    launches += o.launches, samples += o.samples, work += o.work, m2 += o.m2;
     return *this;
   }
 };
 
 // One pixel's records in a pass: its medium-to-medium and medium-to-surface calls, the
 // statistics-only calls that gathered its medium VRLs again under the accurate model
-// (EffortPrice::Pairs), and its remainder.
+// (EffortPrice::Pairs), and its split sub-estimators (by SplitKind).
 struct PixelRecord {
   EffortRecord medium, surface, pair;
-  RemainderRecord remainder;
+  SplitRecord split[kSplitKinds];
+  SplitRecord& operator[](SplitKind k) { return split[static_cast<int>(k)]; }
 };
 
 }  // namespace vrlis

@@ -20,10 +20,10 @@ namespace vrlis::integration {
 
 // The remainder's paths from one camera vertex: EffortSamples(rate) of them (one, and no
 // number drawn, at rate 1), each weighted 1 / rate, so the sum keeps its mean whatever the
-// rate; `stats`, if set, adds what the price learns from (docs/maths.md#effort-remainder),
+// rate; `stats`, if set, adds what the price learns from (docs/maths.md#effort-split),
 // its counted work included. `path` returns one path's contribution.
 template <typename Path>
-Spectrum SplitRemainder(double rate, Rng& rng, vrlis::RemainderRecord* stats, Path&& path) {
+Spectrum SplitRemainder(double rate, Rng& rng, vrlis::SplitRecord* stats, Path&& path) {
   if (rate == 1 && !stats) return path();
   WorkScope scope(stats ? &stats->work : nullptr);
   const int n = rate == 1 ? 1 : vrlis::EffortSamples(rate, rng.Uniform());
@@ -33,14 +33,14 @@ Spectrum SplitRemainder(double rate, Rng& rng, vrlis::RemainderRecord* stats, Pa
     if (stats) stats->m2 += y.MeanSquare() / rate;
     sum += y;
   }
-  if (stats) stats->launches += 1, stats->paths += n;
+  if (stats) stats->launches += 1, stats->samples += n;
   return sum * static_cast<float>(1 / rate);
 }
 
 // One camera path's VRL radiance. `gathers`: what its VRL gather calls take (gather.hpp); the
 // effort's record, which must be set, counts their work and with the control on learns, the
-// remainder's included (its paths per camera vertex: effort.remainder_rate, stochastically
-// rounded, each weighted 1 / rate). `vpls` are the pass's VPLs: with the transport's vpl_bound
+// remainder's and the VPL connections' included (their samples per launch by
+// effort.split_rate, stochastically rounded, each weighted 1 / rate). `vpls` are the pass's VPLs: with the transport's vpl_bound
 // above 0 they share the connections to diffuse points with the remainder whether or not the
 // pass has any.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls,

@@ -29,7 +29,9 @@ struct TransportSettings {
   bool surface_to_surface = true;
   bool surface_to_medium = true;
   float vpl_bound = 1;
-  int vpl_samples = 8;  // VPLs each of those gathers connects, chosen in proportion to flux
+  // VPLs each of those gathers connects, chosen in proportion to flux; with the effort control
+  // on, as many as its price asks once it has one (docs/maths.md#effort-split).
+  int vpl_samples = 8;
   // The VRL gathers' connections the same way (share.hpp): each up to the geometry term
   // `vrl_bound` (1 / r^2 medium to medium, cos / r^2 medium to surface), the remainder
   // sampling the camera vertex's next medium segment for the excess. kUnbounded: the gathers
