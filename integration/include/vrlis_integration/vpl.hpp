@@ -53,7 +53,7 @@ class VplSet {
 // within it in the pixel's units: beta is the camera path's throughput to the gather) and its
 // counted work.
 struct VplConnections {
-  double rate = 8;
+  double rate = 1;
   Spectrum beta{1.f};
   vrlis::SplitRecord* record = nullptr;
 };
