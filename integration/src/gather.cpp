@@ -60,12 +60,14 @@ namespace {
 // on the stack, the scene's visibility as the visitor, which returns its contribution in the
 // price's units (the RMS of the pixel's RGB). The calls count their work into the pixel's
 // record, the visits at renderer_work's constants: the rays the visits trace are not
-// counted again. gather_chunk(call, numbers, segments, n, visit) makes one call.
+// counted again. gather_chunk(call, numbers, segments, n, visit) makes one call;
+// reads(call, u) says whether it reads the segments and weights, u its first number
+// (vrlis::MediumGatherReadsVrls): a chunk whose call does not is not built.
 constexpr int kChunk = 8 * vrlis::kVrlPointBatch;
 
-template <typename GatherShareOf, typename GatherChunk>
+template <typename GatherShareOf, typename Reads, typename GatherChunk>
 Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Spectrum throughput,
-                       const GatherOptions& options, bool surface, Rng& own, GatherShareOf&& share,
+                       const GatherOptions& options, bool surface, Rng& own, GatherShareOf&& share, Reads&& reads,
                        GatherChunk&& gather_chunk) {
   const vrlis::PixelEffort& effort = options.effort;
   const bool pair = options.pair && effort.record;
@@ -74,7 +76,9 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     const int n = static_cast<int>(std::min<std::ptrdiff_t>(kChunk, last - chunk));
     vrlis::VrlSegment<float> segments[kChunk];
     float weights[kChunk];  // for decided gathers, and VrlMarginal's choice of fits
-    for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]), weights[i] = (throughput * chunk[i].flux).Rms();
+    const vrlis::EffortCall<float> call = surface ? effort.Surface(weights) : effort.Medium(weights, options.marginal_scores);
+    if (Rng peek = own; pair || reads(call, double(peek.Uniform())))
+      for (int i = 0; i < n; ++i) segments[i] = SegmentOf(chunk[i]), weights[i] = (throughput * chunk[i].flux).Rms();
     // One visitor for the call and its pair (a second would compile every sampler pair again);
     // the pair's samples are measured, not summed.
     bool summed = true;
@@ -88,8 +92,7 @@ Spectrum SumOverChunks(const Scene& scene, const Vrl* first, const Vrl* last, Sp
     };
     Rng same = own;
     WorkScope uncounted(nullptr, false);  // the record counts the call's work
-    gather_chunk(surface ? effort.Surface(weights) : effort.Medium(weights, options.marginal_scores), own, segments, n,
-                 visit);
+    gather_chunk(call, own, segments, n, visit);
     if (pair) {  // for the statistics alone, on the same numbers: its own are not the path's
       summed = false;
       gather_chunk(effort.Pair(weights), same, segments, n, visit);
@@ -116,7 +119,8 @@ Spectrum GatherEach(vrlis::GatherSamplers method, const Scene& scene, const Came
   auto share = [&](const vrlis::GatherSample<float>& s) {
     return GatherShareOf({s.camera_point, {}, false}, s, options.bound);
   };
-  return SumOverChunks(scene, first, last, throughput, options, false, own, share,
+  auto reads = [&](const vrlis::EffortCall<float>& call, double u) { return vrlis::MediumGatherReadsVrls(method, call, u); };
+  return SumOverChunks(scene, first, last, throughput, options, false, own, share, reads,
                        [&](const vrlis::EffortCall<float>& call, Rng& numbers, const vrlis::VrlSegment<float>* segments,
                            int n, auto& visit) {
                          vrlis::GatherMediumVrls(method, camera, medium, segments, n, [&] { return numbers.Uniform(); },
@@ -144,8 +148,9 @@ Spectrum GatherMediumToSurface(vrlis::SegmentChoice method, const Scene& scene, 
   Rng own = rng.Split();
   const ConnectionEnd from{p, nf, true};
   auto share = [&](const vrlis::GatherSample<float>& s) { return GatherShareOf(from, s, options.bound); };
+  auto reads = [](const vrlis::EffortCall<float>& call, double u) { return vrlis::SurfaceGatherReadsVrls(call, u); };
   return albedo * SumOverChunks(scene, vrls.data(), vrls.data() + vrls.size(), throughput * albedo, options, true, own,
-                                share,
+                                share, reads,
                                 [&](const vrlis::EffortCall<float>& call, Rng& numbers,
                                     const vrlis::VrlSegment<float>* segments, int n, auto& visit) {
                                   vrlis::GatherSurfaceVrls(method, p, nf, medium, segments, n,

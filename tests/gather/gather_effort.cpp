@@ -134,6 +134,38 @@ TEST_CASE("a call taken with a probability keeps the gather unbiased but not wit
   CHECK(Z(sabotaged, off) > 4);
 }
 
+// MediumGatherReadsVrls predicts from a call's first number whether it reads its VRLs: a call
+// it says does not draws that one number alone and visits nothing, even with its VRLs and
+// weights NaN (were they read, NaN bounds take every gather once); one it says does draws more.
+TEST_CASE("a call reads its VRLs exactly where MediumGatherReadsVrls says", "[gather][effort]") {
+  const Setup s = MakeSetup();
+  Setup poisoned = s;
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  for (auto& v : poisoned.vrls) v = {{nan, nan, nan}, {nan, nan, nan}, nan};
+  std::fill(poisoned.weights.begin(), poisoned.weights.end(), nan);
+  vrlis::EffortSettings e{true, vrlis::Sqr(0.8 / BoundRange(s).second)};
+  e.call_demand = 0.3;
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<Real> u(0, 1);
+  int skipped = 0, read = 0, wrong = 0;
+  for (int run = 0; run < 400; ++run) {
+    std::mt19937 peek = rng;
+    const bool reads = vrlis::MediumGatherReadsVrls(s.method, vrlis::EffortCall<Real>{e, nullptr}, double(u(peek)));
+    const Setup& given = reads ? s : poisoned;
+    int draws = 0, visits = 0;
+    Gather(s.method, given, e, given.weights.data(), int(given.vrls.size()), [&] { return ++draws, u(rng); },
+           [&](int, const vrlis::GatherSample<Real>&, Real) { ++visits; });
+    wrong += reads ? draws <= 1 : draws != 1 || visits != 0;
+    (reads ? read : skipped) += 1;
+  }
+  INFO(skipped << " calls not read, " << read << " read, " << wrong << " mispredicted");
+  CHECK(wrong == 0);
+  CHECK(skipped > 200);  // about 70% at rate 0.3
+  CHECK(read > 60);
+  // The control off: every call reads.
+  CHECK(vrlis::MediumGatherReadsVrls(s.method, vrlis::EffortCall<Real>{}, 0.99));
+}
+
 TEST_CASE("q follows the price, between the floor and the ceiling", "[gather][effort]") {
   vrlis::EffortSettings e;
   CHECK(vrlis::EffortQ(e, 1.0) == 1);  // off

@@ -37,6 +37,9 @@ struct NonDeduced {
   using type = T;
 };
 
+// Whether a call of rate `rate` (EffortCallRate) is taken at its first number u.
+inline bool CallTakenAt(double rate, double u) { return !(rate < 1) || u < rate; }
+
 // The camera sampler of a surface gather's samplers, and a call of f(Entry{}) with its entry:
 // chosen at run time, or fixed at compile time (that entry alone compiled).
 inline SegmentChoice CameraSamplerOf(SegmentChoice c) { return c; }
@@ -126,7 +129,7 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
         record->split_second += split[i].sum_sq / k;
       }
   };
-  if (rate < 1 && !(double(uniform()) < rate)) return finish();  // each sample of a taken call weighs 1 / rate more
+  if (rate < 1 && !CallTakenAt(rate, double(uniform()))) return finish();  // each sample of a taken call weighs 1 / rate more
   // What the record learns from one sample, contribution y to the pixel, effort weight w.
   auto learn = [&](int i, const GatherSample<Real>& s, double w, double y) {
     record->samples += 1, record->sum += y, call_sum += y;
@@ -238,6 +241,24 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
     case EffortModel::Chosen: break;
   }
   return method;
+}
+
+// Whether GatherMediumVrls with these samplers and call reads its VRLs and the call's weights,
+// u the first number its uniform() will return (a renderer draws it from a copy of the
+// stream): a call the effort control does not take draws that number, records itself and
+// reads neither (VrlMarginal's scores, taken before the decision, read them either way). A
+// renderer that builds them per call need not for a call that does not read them, and still
+// makes the call; in room, whose calls are taken at about 1%, building them took a fifth of
+// a pass. SurfaceGatherReadsVrls: the same for GatherSurfaceVrls.
+template <typename Real>
+bool MediumGatherReadsVrls(const GatherSamplers& samplers, const EffortCall<Real>& call, double u) {
+  const bool scored = samplers.vrl == VrlSamplers::Of<VrlMarginalEntry>() &&
+                      (call.settings.marginal_threshold > 0 || call.scores);
+  return scored || detail::CallTakenAt(EffortCallRate(call.settings), u);
+}
+template <typename Real>
+bool SurfaceGatherReadsVrls(const EffortCall<Real>& call, double u) {
+  return detail::CallTakenAt(EffortCallRate(call.settings), u);
 }
 
 // The medium-to-medium gathers of vrls[0, count) against the camera segment:
