@@ -92,6 +92,12 @@ double MeanOverPixels(const char* scene, F&& f) {
   return sum / (s.width * s.height);
 }
 
+// A split kind's demand after 5 passes, over the pixels (MeanOverPixels).
+double MeanSplitDemand(const char* scene, vrlis::SplitKind kind) {
+  return MeanOverPixels(scene, [kind](const vrlis::EffortPrice& price, const vrlis::integration::RenderSettings&, int x,
+                                      int y) { return price.split_demand(kind, x, y); });
+}
+
 bool Same(const vrlis::integration::Film& a, const vrlis::integration::Film& b) {
   return a.pixels.size() == b.pixels.size() &&
          std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(vrlis::integration::Spectrum)) == 0;
@@ -225,7 +231,7 @@ TEST_CASE("effort: split VPL connections keep their gather's mean and learn its 
   // A "connection" worth 2 u, u uniform in [0, 1), scaled by 1/2 and seen through a path of
   // throughput 3: a gather's mean 1/2 whatever the rate, a connection's pixel contribution 3 u
   // of variance 9/12 within the gather. SplitRecord's m2 per launch estimates it; the sabotage
-  // (the gather without its 1 / rate) must be rejected.
+  // (the gather weighted 1 / floor(rate), the count it mostly takes, not 1 / rate) must be rejected.
   const double rate = GENERATE(2.0, 2.6, 13.3);
   INFO("rate " << rate);
   vrlis::integration::Rng rng(9, 0, 0, vrlis::integration::StreamPurpose::Camera);
@@ -249,26 +255,16 @@ TEST_CASE("effort: split VPL connections keep their gather's mean and learn its 
 }
 
 TEST_CASE("effort: VPL connections follow the price where they hold the noise", "[render][effort]") {
-  auto mean_demand = [](const char* scene) {
-    return MeanOverPixels(scene, [](const vrlis::EffortPrice& price,
-                                    const vrlis::integration::RenderSettings&, int x, int y) {
-      return price.split_demand(vrlis::SplitKind::VplSurface, x, y);
-    });
-  };
-  const double cube = mean_demand("cube"), room = mean_demand("room");
+  using vrlis::SplitKind;
+  const double cube = MeanSplitDemand("cube", SplitKind::VplSurface), room = MeanSplitDemand("room", SplitKind::VplSurface);
   INFO("mean surface-to-surface VPL demand after 5 passes: cube " << cube << ", room " << room);
   CHECK(cube > 8);          // its VPLs hold most of the variance (docs/compare/decomposition.md)
   CHECK(room < cube / 8);   // direct light holds almost all of room's
 }
 
 TEST_CASE("effort: the remainder is split where its paths hold the noise, never rouletted", "[render][effort]") {
-  auto mean_rate = [](const char* scene) {
-    return MeanOverPixels(scene, [](const vrlis::EffortPrice& price,
-                                    const vrlis::integration::RenderSettings&, int x, int y) {
-      return price.split_demand(vrlis::SplitKind::Remainder, x, y);
-    });
-  };
-  const double corner = mean_rate("corner"), room = mean_rate("room");
+  using vrlis::SplitKind;
+  const double corner = MeanSplitDemand("corner", SplitKind::Remainder), room = MeanSplitDemand("room", SplitKind::Remainder);
   INFO("mean remainder demand after 5 passes: corner " << corner << ", room " << room);
   CHECK(corner > 2);           // its remainder holds most of the variance at a few percent of the time
   CHECK(room < corner / 4);    // its remainder holds almost none

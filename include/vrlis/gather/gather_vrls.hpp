@@ -40,6 +40,14 @@ struct NonDeduced {
 // Whether a call of rate `rate` (EffortCallRate) is taken at its first number u.
 inline bool CallTakenAt(double rate, double u) { return !(rate < 1) || u < rate; }
 
+// Whether a medium call with VrlMarginal as step one (`marginal`) scores its VRLs, which it
+// does before deciding whether it is taken (a valid query's; the fits' threshold, or a renderer
+// collecting the scores).
+template <typename Real>
+bool ScoresVrls(bool marginal, const EffortCall<Real>& call) {
+  return marginal && (call.settings.marginal_threshold > 0 || call.scores);
+}
+
 // The camera sampler of a surface gather's samplers, and a call of f(Entry{}) with its entry:
 // chosen at run time, or fixed at compile time (that entry alone compiled).
 inline SegmentChoice CameraSamplerOf(SegmentChoice c) { return c; }
@@ -252,9 +260,8 @@ inline SegmentChoice SegmentSamplerFor(SegmentChoice method, EffortModel model) 
 // a pass. SurfaceGatherReadsVrls: the same for GatherSurfaceVrls.
 template <typename Real>
 bool MediumGatherReadsVrls(const GatherSamplers& samplers, const EffortCall<Real>& call, double u) {
-  const bool scored = samplers.vrl == VrlSamplers::Of<VrlMarginalEntry>() &&
-                      (call.settings.marginal_threshold > 0 || call.scores);
-  return scored || detail::CallTakenAt(EffortCallRate(call.settings), u);
+  return detail::ScoresVrls(samplers.vrl == VrlSamplers::Of<VrlMarginalEntry>(), call) ||
+         detail::CallTakenAt(EffortCallRate(call.settings), u);
 }
 template <typename Real>
 bool SurfaceGatherReadsVrls(const EffortCall<Real>& call, double u) {
@@ -281,7 +288,7 @@ void GatherMediumVrls(Samplers samplers, const RaySegment<Real>& camera, const M
     // accurate model, which is already given by demand).
     constexpr bool marginal = std::is_same_v<VrlSampler, VrlMarginalEntry::Sampler<Real>>;
     const bool chosen = marginal && valid && settings.marginal_threshold > 0;
-    const bool scored = marginal && valid && (chosen || effort.scores);
+    const bool scored = valid && detail::ScoresVrls(marginal, effort);
     constexpr int kStackScores = 256;
     double stack_score[marginal ? kStackScores : 1];
     Real stack_bound[marginal ? kStackScores : 1];
