@@ -321,6 +321,23 @@ int main(int argc, char** argv) {
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;
   if (!pilot.empty()) summary["vrl_bound_pilot"] = pilot;
+  // With the control on: the model each gather kind took at the end, and what the first price
+  // weighed the models by (per pixel and pass; docs/maths.md#effort-models).
+  if (auto* vrl = dynamic_cast<vrlis::integration::VrlRenderer*>(renderer.get()); vrl && effort == "on") {
+    const vrlis::EffortPrice& price = vrl->effort_price();
+    auto name = [](vrlis::EffortModel m) {
+      constexpr const char* kNames[] = {"rule", "accurate", "cheapest", "mixture"};
+      return kNames[static_cast<int>(m)];
+    };
+    for (auto [kind, key] : {std::pair{vrlis::GatherKind::Medium, "medium"}, std::pair{vrlis::GatherKind::Surface, "surface"}}) {
+      const vrlis::EffortPrice::ModelWeighing& w = price.first_weighing(kind);
+      nlohmann::json changes = nlohmann::json::object();
+      for (const auto* c : {&w.cheapest, &w.mixture, &w.accurate})
+        if (c->known) changes[name(c->model)] = {{"dv", c->dv}, {"dt", c->dt}, {"share", c->share}};
+      summary["effort_models"][key] = {{"model", name(price.model(kind))},
+                                       {"first_weighing", {{"v_rule", w.v_rule}, {"t_rule", w.t_rule}, {"changes", changes}}}};
+    }
+  }
   if (ref) summary["rmse"] = Rmse(image, *ref);
   std::string err;
   if (!dump_queries.empty()) {
