@@ -13,10 +13,12 @@
 #include <limits>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include <vrlis/core/query_rejections.hpp>
 #include <vrlis_integration/query_log.hpp>
@@ -321,12 +323,14 @@ int main(int argc, char** argv) {
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;
   if (!pilot.empty()) summary["vrl_bound_pilot"] = pilot;
-  // With the control on: the model each gather kind took at the end, and what the first price
-  // weighed the models by (per pixel and pass; docs/maths.md#effort-models).
-  if (auto* vrl = dynamic_cast<vrlis::integration::VrlRenderer*>(renderer.get()); vrl && effort == "on") {
+  // With `auto` and the control on: the model each gather kind took at the end, and what the
+  // first price weighed the models by (per pixel and pass; docs/maths.md#effort-models).
+  const bool weighs_models = method->segment == vrlis::SegmentSamplers::Of<vrlis::AutoEntry>() && effort == "on";
+  if (auto* vrl = dynamic_cast<vrlis::integration::VrlRenderer*>(renderer.get()); vrl && weighs_models) {
     const vrlis::EffortPrice& price = vrl->effort_price();
     auto name = [](vrlis::EffortModel m) {
-      constexpr const char* kNames[] = {"rule", "accurate", "cheapest", "mixture"};
+      constexpr const char* kNames[] = {"rule", "accurate", "cheapest", "mixture"};  // in EffortModel's order
+      static_assert(std::size(kNames) == vrlis::kEffortModels);
       return kNames[static_cast<int>(m)];
     };
     for (auto [kind, key] : {std::pair{vrlis::GatherKind::Medium, "medium"}, std::pair{vrlis::GatherKind::Surface, "surface"}}) {

@@ -40,9 +40,9 @@ Spectrum SplitRemainder(double rate, Rng& rng, vrlis::SplitRecord* stats, Path&&
 // One camera path's VRL radiance. `gathers`: what its VRL gather calls take (gather.hpp); the
 // effort's record, which must be set, counts their work and with the control on learns, the
 // remainder's and the VPL connections' included (their samples per launch by
-// effort.split_rate, stochastically rounded, each weighted 1 / rate). `vpls` are the pass's VPLs: with the transport's vpl_bound
-// above 0 they share the connections to diffuse points with the remainder whether or not the
-// pass has any.
+// effort.split_rate, stochastically rounded, each weighted 1 / rate). `vpls` are the pass's
+// VPLs: with the transport's vpl_bound above 0 they share the connections to diffuse points
+// with the remainder whether or not the pass has any.
 Spectrum VrlRadiance(const Scene& scene, const TransportSettings& transport, const std::vector<Vrl>& vrls,
                      const VplSet& vpls, Ray ray, Rng& rng, const GatherOptions& gathers);
 
