@@ -374,8 +374,9 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
 // four passes after the first) at 5000 work units a pixel, each pixel taking 10 samples of the
 // rule, at 400 in the odd pixels and measuring the mixture's added variance, `excess` a pixel,
 // in the even ones; the first pass's pixel 1 also takes 10 samples of the mixture at 200. Per pixel, the mixture
-// changes V by `excess` and T by -2000: whole, it pays below 2 V / 3 = 0.0089; to first order
-// (excess / V < 2 / 5) only below 0.0053.
+// changes V by `excess` and T by -2000: whole, it pays below 2 V / 3 = 0.0089, by the margin a
+// cheaper model must pay (kCheaperMargin, 0.9) below V / 2 = 0.0067; to first order (excess / V
+// < 2 / 5) only below 0.0053.
 TEST_CASE("effort: the price takes the model whose variance x time is least", "[render][effort]") {
   using vrlis::EffortModel;
   constexpr int kRule = static_cast<int>(EffortModel::Chosen), kMixture = static_cast<int>(EffortModel::Mixture);
@@ -397,7 +398,8 @@ TEST_CASE("effort: the price takes the model whose variance x time is least", "[
     return price.model(vrlis::GatherKind::Medium);
   };
   CHECK(model(0.002) == EffortModel::Mixture);
-  CHECK(model(0.007) == EffortModel::Mixture);  // the rule to first order
+  CHECK(model(0.006) == EffortModel::Mixture);  // the rule to first order
+  CHECK(model(0.008) == EffortModel::Chosen);   // pays, within the margin
   CHECK(model(0.02) == EffortModel::Chosen);
 }
 

@@ -98,6 +98,11 @@ class EffortPrice {
   // pass (Pairs), and the margin a change to or from that model must pay (its variance and
   // the rule's differ many-fold, and a render that flips between them pays for the flip).
   static constexpr double kPairShare = 1.0 / 4, kAccurateMargin = 0.8;
+  // The margin a cheaper model (the cheapest, the mixture) must pay against the rule: its
+  // variance is weighed from the rule's samples, which rarely draw the large weights it makes
+  // where it misses a peaked lobe, so a small predicted gain can hide a loss of integer factors
+  // (docs/maths.md#effort-cheapest).
+  static constexpr double kCheaperMargin = 0.9;
 
   EffortPrice() = default;
   // visit_work: the counted work of one of the renderer's visits (EffortCall::visit_work).
@@ -460,13 +465,14 @@ class EffortPrice {
     return w;
   }
 
-  // The model with the least V x T; the accurate one weighed once, at the first price, and
-  // kept (a render that flips between it and the rule pays for the flip).
+  // The model with the least V x T, by a margin against the rule; the accurate one weighed
+  // once, at the first price, and kept (a render that flips between it and the rule pays for
+  // the flip).
   EffortModel ChooseModel(int k, const ModelWeighing& w) const {
     if (model_[k] == EffortModel::Accurate) return EffortModel::Accurate;
     if (!(w.v_rule > 0 && w.t_rule > 0)) return EffortModel::Chosen;  // none, or estimates that contradict the measurement
     auto score = [](const ModelChange& c, double product) {
-      return c.model == EffortModel::Accurate ? product / kAccurateMargin : product;
+      return product / (c.model == EffortModel::Accurate ? kAccurateMargin : kCheaperMargin);
     };
     EffortModel best = EffortModel::Chosen;
     double least = w.v_rule * w.t_rule;
