@@ -370,37 +370,43 @@ TEST_CASE("effort: a pair changes no gather and measures the accurate model on t
   CHECK(segments > 8);
 }
 
-// Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (variance V = 0.04 / 3 over the
-// four passes after the first) at 5000 work units a pixel, each pixel taking 10 samples of the
-// rule, at 400 in the odd pixels and measuring the mixture's added variance, `excess` a pixel,
-// in the even ones; the first pass's pixel 1 also takes 10 samples of the mixture at 200. Per pixel, the mixture
-// changes V by `excess` and T by -2000: whole, it pays below 2 V / 3 = 0.0089, by the margin a
-// cheaper model must pay (kCheaperMargin, 0.9) below V / 2 = 0.0067; to first order (excess / V
-// < 2 / 5) only below 0.0053.
-TEST_CASE("effort: the price takes the model whose variance x time is least", "[render][effort]") {
+// Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 at 5000 work units a pixel, each
+// pixel taking 10 samples of the rule, at 400 in the odd pixels and measuring the mixture's
+// added variance, `excess[pass]` a pixel, in the even ones; the first pass's pixel 1 also takes
+// 10 samples of the mixture at 200. The refreshes after passes 2, 3 and 4 weigh: V = 0.02, then
+// 0.04 / 3, the mixture's change of V the mean excess so far and of T -2000 of 5000. So a
+// mixture taken pays where (V + excess) 0.6 < V, by the margin a change must pay
+// (kSwitchMargin) where it is below 0.9 V.
+TEST_CASE("effort: the price changes the image's model where V x T is less by a margin", "[render][effort]") {
   using vrlis::EffortModel;
   constexpr int kRule = static_cast<int>(EffortModel::Chosen), kMixture = static_cast<int>(EffortModel::Mixture);
-  auto model = [](double excess) {
+  auto model = [](std::vector<double> excess) {
     constexpr int kSide = 8;
     vrlis::EffortPrice price(kSide, kSide);
-    for (int pass = 0; pass < 5; ++pass) {
+    for (std::size_t pass = 0; pass < excess.size(); ++pass) {
       price.BeginPass(vrlis::EffortSettings{true});
       for (int i = 0; i < kSide * kSide; ++i) {
         vrlis::EffortRecord& p = price.Pixel(i % kSide, i / kSide, [] { return 0.5; }).record->medium;
         p.calls = 1, p.samples = 10, p.work = 5e3, p.predicted = p.measured = 1;  // priced from the second pass
         p.model_samples[kRule] = 10;
         if (i % 2) p.model_work[kRule] = 10 * 400.0;
-        else p.mixture_measured = 10, p.mixture_excess = excess;
+        else p.mixture_measured = 10, p.mixture_excess = excess[pass];
         if (pass == 0 && i == 1) p.samples += 10, p.model_samples[kMixture] = 10, p.model_work[kMixture] = 10 * 200.0;
       }
       price.EndPass(std::vector<double>(kSide * kSide, pass % 2 ? 0.9 : 1.1));
     }
     return price.model(vrlis::GatherKind::Medium);
   };
-  CHECK(model(0.002) == EffortModel::Mixture);
-  CHECK(model(0.006) == EffortModel::Mixture);  // the rule to first order
-  CHECK(model(0.008) == EffortModel::Chosen);   // pays, within the margin
-  CHECK(model(0.02) == EffortModel::Chosen);
+  auto constant = [&](double excess) { return model(std::vector<double>(5, excess)); };
+  CHECK(constant(0.006) == EffortModel::Mixture);  // 0.78 V T, then 0.87: the rule to first order
+  CHECK(constant(0.012) == EffortModel::Chosen);   // 0.96 V T, then 1.14
+  // Mean excess 0.012, 0.010, 0.0088: 0.96, 1.05, 0.996 V T, never by the margin.
+  CHECK(model({0.012, 0.012, 0.012, 0.004, 0.004}) == EffortModel::Chosen);
+  // Taken at 0.66 V T (mean excess 0.002), the mixture is kept where the rule then beats it
+  // within the margin (mean 0.0065, 0.0092: 0.89, 1.014 V T), and left where by more (0.014:
+  // 1.23 V T).
+  CHECK(model({0.002, 0.002, 0.002, 0.02, 0.02}) == EffortModel::Mixture);
+  CHECK(model({0.002, 0.002, 0.002, 0.05, 0.05}) == EffortModel::Chosen);
 }
 
 // Passes of 8 x 8 pixels whose values alternate 1.1 and 0.9 (neighbours' variance 0.02) at 5000

@@ -98,11 +98,12 @@ class EffortPrice {
   // pass (Pairs), and the margin a change to or from that model must pay (its variance and
   // the rule's differ many-fold, and a render that flips between them pays for the flip).
   static constexpr double kPairShare = 1.0 / 4, kAccurateMargin = 0.8;
-  // The margin a cheaper model (the cheapest, the mixture) must pay against the rule: its
-  // variance is weighed from the rule's samples, which rarely draw the large weights it makes
-  // where it misses a peaked lobe, so a small predicted gain can hide a loss of integer factors
-  // (docs/maths.md#effort-cheapest).
-  static constexpr double kCheaperMargin = 0.9;
+  // The margin any other change of the image's model (to the accurate one: kAccurateMargin)
+  // must pay against the model it has, the rule at first: a cheaper model's variance is
+  // weighed from the rule's samples, which rarely draw the large weights it makes where it
+  // misses a peaked lobe, so a small predicted gain can hide a loss of integer factors; and
+  // a weighing that flips with its noise pays for the flips (docs/maths.md#effort-cheapest).
+  static constexpr double kSwitchMargin = 0.9;
 
   EffortPrice() = default;
   // visit_work: the counted work of one of the renderer's visits (EffortCall::visit_work).
@@ -465,20 +466,26 @@ class EffortPrice {
     return w;
   }
 
-  // The model with the least V x T, by a margin against the rule; the accurate one weighed
-  // once, at the first price, and kept (a render that flips between it and the rule pays for
-  // the flip).
+  // The model with the least V x T, any change from the image's present model by a margin;
+  // the accurate one weighed once, at the first price, and kept (a render that flips between
+  // it and the rule pays for the flip).
   EffortModel ChooseModel(int k, const ModelWeighing& w) const {
     if (model_[k] == EffortModel::Accurate) return EffortModel::Accurate;
     if (!(w.v_rule > 0 && w.t_rule > 0)) return EffortModel::Chosen;  // none, or estimates that contradict the measurement
-    auto score = [](const ModelChange& c, double product) {
-      return product / (c.model == EffortModel::Accurate ? kAccurateMargin : kCheaperMargin);
+    const ModelChange rule{EffortModel::Chosen, 0, 0, 0, true};
+    auto product = [&](const ModelChange& c) {
+      const double v = w.v_rule + c.dv;
+      return c.known && v > 0 ? v * (w.t_rule + c.dt) : std::numeric_limits<double>::infinity();
     };
-    EffortModel best = EffortModel::Chosen;
-    double least = w.v_rule * w.t_rule;
-    for (const ModelChange* c : {&w.cheapest, &w.mixture, &w.accurate}) {
-      const double v = w.v_rule + c->dv, product = v * (w.t_rule + c->dt);
-      if (c->known && v > 0 && score(*c, product) < least) least = score(*c, product), best = c->model;
+    const ModelChange* present = &rule;
+    for (const ModelChange* c : {&w.cheapest, &w.mixture})
+      if (c->model == model_[k] && std::isfinite(product(*c))) present = c;
+    EffortModel best = present->model;
+    double least = product(*present);
+    for (const ModelChange* c : {&rule, &w.cheapest, &w.mixture, &w.accurate}) {
+      if (c == present) continue;
+      const double score = product(*c) / (c->model == EffortModel::Accurate ? kAccurateMargin : kSwitchMargin);
+      if (score < least) least = score, best = c->model;
     }
     return best;
   }
