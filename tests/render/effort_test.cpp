@@ -398,8 +398,10 @@ TEST_CASE("effort: the price changes the image's model where V x T is less by a 
     return price.model(vrlis::GatherKind::Medium);
   };
   auto constant = [&](double excess) { return model(std::vector<double>(5, excess)); };
-  CHECK(constant(0.006) == EffortModel::Mixture);  // 0.78 V T, then 0.87: the rule to first order
+  CHECK(constant(0.002) == EffortModel::Mixture);  // 0.66 V T, then 0.69
+  CHECK(constant(0.007) == EffortModel::Mixture);  // 0.81 V T, then 0.92: the rule to first order
   CHECK(constant(0.012) == EffortModel::Chosen);   // 0.96 V T, then 1.14
+  CHECK(constant(0.02) == EffortModel::Chosen);    // 1.2 V T, then 1.5
   // Mean excess 0.012, 0.010, 0.0088: 0.96, 1.05, 0.996 V T, never by the margin.
   CHECK(model({0.012, 0.012, 0.012, 0.004, 0.004}) == EffortModel::Chosen);
   // Taken at 0.66 V T (mean excess 0.002), the mixture is kept where the rule then beats it
