@@ -341,6 +341,10 @@ int main(int argc, char** argv) {
       summary["effort_models"][key] = {{"model", name(price.model(kind))},
                                        {"first_weighing", {{"v_rule", w.v_rule}, {"t_rule", w.t_rule}, {"changes", changes}}}};
     }
+    // Whether the pilot paired pixels under the accurate model, from its probe.
+    summary["effort_models"]["pilot_probe"] = {{"medium_m2", price.probe().medium_m2},
+                                               {"variance", price.probe().variance},
+                                               {"pairs", price.pairs_pay()}};
   }
   if (ref) summary["rmse"] = Rmse(image, *ref);
   std::string err;

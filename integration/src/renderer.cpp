@@ -110,7 +110,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
   RenderSettings pixel_settings = settings_;
   if (pilot) pixel_settings.pixel_samples = PixelSamples::Independent;
   auto rendered = [pilot](int x, int y) { return !pilot || vrlis::EffortPrice::InPilot(x, y); };
-  Film film = ForEachPixel(scene_, pixel_settings, seed, pass, [&](const Ray& ray, Rng& rng, int x, int y) {
+  auto pixel = [&](const Ray& ray, Rng& rng, int x, int y) {
     const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(settings_.width) + static_cast<std::size_t>(x);
     TransportSettings pixel_transport = transport;
     if (bounds_.active()) pixel_transport.vrl_bound = bounds_.Bound(x, y);
@@ -131,7 +131,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
         // gather their VRLs under the accurate model, for the statistics alone
         // (docs/maths.md#effort-accurate).
         const std::uint64_t left = static_cast<std::uint64_t>(y) * settings_.width + static_cast<std::uint64_t>(x - x % 2);
-        options.pair = pairs_models && price_.Pairs(Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
+        options.pair = pairs_models && price_.Pairs(x, y, Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
       } else {
         options.effort.medium = options.effort.surface = base;
         options.effort.visit_work = kVisitWork;
@@ -150,14 +150,33 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
                       std::memory_order_relaxed);
     vertices.fetch_add(ThreadVertices() - vertices_before, std::memory_order_relaxed);
     return L;
-  }, rendered);
+  };
+  // Each rendered pixel's value for the price: the RMS of its RGB (not finite: not rendered).
+  auto values_of = [&](const Film& f, auto&& taken) {
+    std::vector<double> v(pixels);
+    for (std::size_t i = 0; i < pixels; ++i)
+      v[i] = taken(int(i % std::size_t(settings_.width)), int(i / std::size_t(settings_.width)))
+                 ? std::sqrt(f.pixels[i].MeanSquare())
+                 : std::numeric_limits<double>::quiet_NaN();
+    return v;
+  };
+  Film film;
+  if (pilot && pairs_models) {  // the probe first: whether the rest of the pilot pairs
+    auto probe = [](int x, int y) { return vrlis::EffortPrice::InProbe(x, y); };
+    RenderSettings probe_settings = pixel_settings;
+    probe_settings.rows_done = nullptr;  // (the progress counts the pilot's rows once)
+    film = ForEachPixel(scene_, probe_settings, seed, pass, pixel, probe);
+    price_.EndProbe(values_of(film, probe));
+    const Film rest = ForEachPixel(scene_, pixel_settings, seed, pass, pixel,
+                                   [&](int x, int y) { return rendered(x, y) && !probe(x, y); });
+    for (std::size_t i = 0; i < pixels; ++i)
+      if (!probe(int(i % std::size_t(settings_.width)), int(i / std::size_t(settings_.width)))) film.pixels[i] = rest.pixels[i];
+  } else {
+    film = ForEachPixel(scene_, pixel_settings, seed, pass, pixel, rendered);
+  }
   double other = 0, work = light_work;
   for (std::size_t i = 0; i < pixels; ++i) other += pixel_work[i], work += pixel_work[i] + gather_work[i];
-  std::vector<double> values(effort.on || bounds_.active() ? pixels : 0);
-  for (std::size_t i = 0; i < values.size(); ++i)
-    values[i] = rendered(int(i % std::size_t(settings_.width)), int(i / std::size_t(settings_.width)))
-                    ? std::sqrt(film.pixels[i].MeanSquare())
-                    : std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> values = effort.on || bounds_.active() ? values_of(film, rendered) : std::vector<double>{};
   if (effort.on) price_.EndPass(values, other);
   if (bounds_.active() && !pilot) {
     for (std::size_t i = 0; i < pixels; ++i) pixel_work[i] += gather_work[i];

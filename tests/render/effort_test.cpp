@@ -26,7 +26,9 @@
 // - `auto` takes the accurate model where its variance is worth its time: in the
 //   bidirectional scene at g = 0, not in room; on synthetic passes where the first pass's pairs
 //   show it worth its time, within a margin, and then for good; a pair changes no gather and its
-//   pixel delta is what the accurate model on the same random numbers adds instead;
+//   pixel delta is what the accurate model on the same random numbers adds instead; the pilot
+//   pairs no pixel where its probe shows that even a free accurate model could not pay (room,
+//   and a synthetic probe either side of the bound), and pairs where it could (bidirectional);
 // - the price compares the image's states whole: on synthetic passes it takes the mixture
 //   where its added variance and saved time lower V x T (also where first order says the
 //   rule) and the rule where they raise it;
@@ -43,8 +45,10 @@
 #include <cmath>
 #include <cstring>
 
+#include <limits>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include <vrlis/core/running_moments.hpp>
 #include <vrlis_integration/camera_paths.hpp>
@@ -286,7 +290,7 @@ TEST_CASE("effort: auto weighs the models by the variance each adds or removes",
     s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
     vrlis::integration::VrlRenderer r(built->scene, s);
     r.RenderPass(1, 0, nullptr);
-    return r.effort_price().first_weighing(vrlis::GatherKind::Medium);
+    return std::pair{r.effort_price().first_weighing(vrlis::GatherKind::Medium), r.effort_price().pairs_pay()};
   };
   // The image's measured variance: the rule's and the pilots' shares of theirs.
   auto measured = [](const Weighing& w) {
@@ -299,23 +303,27 @@ TEST_CASE("effort: auto weighs the models by the variance each adds or removes",
     return o.str();
   };
   auto known = [](const Weighing& w) { return w.cheapest.known && w.mixture.known && w.accurate.known; };
-  // Room's gathers hold almost none of the variance: no model changes it by much.
-  const Weighing room = weigh("room", 0.5f, 16, false);
+  // Room's gathers hold almost none of the variance: no model changes it by much, and the
+  // pilot's probe shows that the accurate model cannot pay, so that no pixel pairs.
+  const auto [room, room_pairs] = weigh("room", 0.5f, 16, false);
   INFO("room: " << describe(room));
-  REQUIRE(known(room));
+  REQUIRE((room.cheapest.known && room.mixture.known));
   CHECK(std::abs(room.cheapest.dv) < 0.01 * room.v_rule);
   CHECK(std::abs(room.mixture.dv) < 0.01 * room.v_rule);
-  CHECK(room.accurate.dv > -0.25 * room.v_rule);
+  CHECK_FALSE(room_pairs);
+  CHECK_FALSE(room.accurate.known);
   // Bidirectional, g = 0.9: equiangular sampling has many times a fit's variance.
-  const Weighing forward = weigh("bidirectional", 0.9f, 16, false);
+  const auto [forward, forward_pairs] = weigh("bidirectional", 0.9f, 16, false);
   INFO("bidirectional, g = 0.9: " << describe(forward));
+  CHECK(forward_pairs);
   REQUIRE(known(forward));
   CHECK(forward.cheapest.dv > measured(forward));
   // Bidirectional, g = 0, at the study's size (the pilot's pixels are the estimate's) and
   // with the light's lattice fixed (its rotation adds noise that no model removes): the
   // accurate model removes most of the variance.
-  const Weighing plain = weigh("bidirectional", 0.f, 48, true);
+  const auto [plain, plain_pairs] = weigh("bidirectional", 0.f, 48, true);
   INFO("bidirectional, g = 0: " << describe(plain));
+  CHECK(plain_pairs);
   REQUIRE(known(plain));
   CHECK(plain.accurate.dv < -0.6 * plain.v_rule);
   CHECK(plain.accurate.dv > -plain.v_rule);  // a variance cannot fall below 0
@@ -447,6 +455,37 @@ TEST_CASE("effort: the accurate model is taken where its pairs' image is worth t
   CHECK(model(0.9, 5e2, 1, true) == EffortModel::Chosen);     // V x 0.81 at 1.2 times T: within the margin
   CHECK(model(0.3, 2e3, 1, false) == EffortModel::Chosen);    // no pairs, no measure of it
   CHECK(model(0.3, 2e3, 6, true) == EffortModel::Accurate);   // kept in the passes after
+}
+
+// The pilot's probe (EffortPrice::EndProbe): an 8 x 8 image whose probe pixels alternate 1.1
+// and 0.9 (neighbours' variance 0.02), each with `m2` as its medium-to-medium samples' sum of
+// squares. The accurate model can remove at most that much variance; below 1 - kAccurateMargin
+// of 0.02 (0.004) it cannot pay, and the rest of the pilot pairs no pixel.
+TEST_CASE("effort: the pilot pairs pixels only where its probe shows the accurate model could pay",
+          "[render][effort]") {
+  constexpr int kSide = 8;
+  auto pairs = [](double m2, bool probed) {
+    vrlis::EffortPrice price(kSide, kSide);
+    price.BeginPass(vrlis::EffortSettings{true});
+    std::vector<double> values(kSide * kSide, std::numeric_limits<double>::quiet_NaN());
+    for (int i = 0; i < kSide * kSide; ++i) {
+      const int x = i % kSide, y = i / kSide;
+      if (!vrlis::EffortPrice::InProbe(x, y)) continue;
+      values[std::size_t(i)] = x % 2 ? 0.9 : 1.1;
+      price.Pixel(x, y, [] { return 0.5; }).record->medium.sum_sq = m2;
+    }
+    if (probed) price.EndProbe(values);
+    int paired = 0, probe_paired = 0;
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x)
+        if (vrlis::EffortPrice::InPilot(x, y) && price.Pairs(x, y, 0.5))
+          ++(vrlis::EffortPrice::InProbe(x, y) ? probe_paired : paired);
+    CHECK(probe_paired == 0);  // the probe's own pixels never pair
+    return paired;
+  };
+  CHECK(pairs(0.003, true) == 0);
+  CHECK(pairs(0.005, true) == 14);  // the other 14 of the tile's 16 pilot pixels
+  CHECK(pairs(0.003, false) == 14);  // without a probe, as before one
 }
 
 TEST_CASE("effort: gathers are decided one by one only where the decisions pay", "[render][effort]") {

@@ -16,7 +16,8 @@
 //
 // A renderer may first render a pilot (while PilotDue()): the pixels InPilot names, a quarter,
 // on numbers of no pass, their values handed to EndPass (the others' not finite) and not kept
-// in the image; the first pass then is already priced (docs/maths.md#effort-pilot). Pixel
+// in the image; the first pass then is already priced (docs/maths.md#effort-pilot). With
+// `auto`, the pilot's probe (InProbe) first, its values handed to EndProbe. Pixel
 // values are a scalar per pixel (our renderer: the RMS of its RGB), in the units the
 // visitors' contributions and the weights are in. The variance of one pass's pixel estimate
 // is averaged over pixels with the largest thousandth left out (a few fireflies must not flip
@@ -173,12 +174,43 @@ class EffortPrice {
   bool PilotDue() const { return passes_ == 0; }
   static bool InPilot(int x, int y) { return (x / 2 + y) % 4 == 0; }
 
-  // Whether a pixel of `auto` also gathers its medium-to-medium VRLs under the accurate model,
-  // for the statistics alone (PixelEffort::Pair), u uniform in [0, 1) and the same for
-  // horizontal neighbours (x and x + 1, x even): in the pilot, a kPairShare
-  // of them. The image rendered and the image had those gathers taken the accurate model give
-  // both models' variances by one estimator (docs/maths.md#effort-accurate).
-  bool Pairs(double u) const { return passes_ < kMinPasses && u < FirstPass(kPairShare); }
+  // The pilot's probe: its pixels in one row of eight (two in each 8 x 8 tile), which a
+  // renderer may render first and hand to EndProbe, so that the rest of the pilot pairs its
+  // pixels only where pairs can pay (docs/maths.md#effort-accurate).
+  static bool InProbe(int x, int y) { return InPilot(x, y) && y % 8 == 0; }
+
+  // Whether pixel (x, y) of `auto` also gathers its medium-to-medium VRLs under the accurate
+  // model, for the statistics alone (PixelEffort::Pair), u uniform in [0, 1) and the same for
+  // horizontal neighbours (x and x + 1, x even): in the pilot, outside its probe, a kPairShare
+  // of them, unless the probe showed that pairs cannot pay. The image rendered and the image
+  // had those gathers taken the accurate model give both models' variances by one estimator
+  // (docs/maths.md#effort-accurate).
+  bool Pairs(int x, int y, double u) const {
+    return passes_ < kMinPasses && pairs_pay_ && !InProbe(x, y) && u < FirstPass(kPairShare);
+  }
+
+  // The probe's pixel values (row-major, width x height; not finite: not rendered), after its
+  // pixels and before the rest of the pilot. The accurate model can remove at most the variance
+  // of the medium-to-medium gathers given the pixel's path and the pass's VRLs: the sum of
+  // their samples' variances (each VRL's sample has numbers of its own), at most the sum of
+  // their squares. Where that is below 1 - kAccurateMargin of the pixel variance even a free
+  // accurate model would not be taken, and the pilot pairs none.
+  void EndProbe(const std::vector<double>& values) {
+    if (values.size() != pixels_) throw std::invalid_argument("vrlis::EffortPrice::EndProbe: one value per pixel");
+    double m2 = 0, rendered = 0;
+    for (std::size_t i = 0; i < pixels_; ++i)
+      if (std::isfinite(values[i])) m2 += records_[i].medium.sum_sq, ++rendered;
+    const double variance = NeighbourVariance(values);
+    probe_ = {rendered > 0 ? m2 / rendered : 0, variance};
+    pairs_pay_ = !(variance > 0 && rendered > 0) || probe_.medium_m2 >= (1 - kAccurateMargin) * variance;
+  }
+  // What the probe measured (zeros before it): per pixel, the medium-to-medium samples' sum of
+  // squares and the variance; whether the pilot pairs.
+  struct Probe {
+    double medium_m2 = 0, variance = 0;
+  };
+  const Probe& probe() const { return probe_; }
+  bool pairs_pay() const { return pairs_pay_; }
 
   // One finished pass: each pixel's value (row-major, width x height; another count throws
   // std::invalid_argument; not finite: not rendered) and the work the renderer counted outside
@@ -533,6 +565,8 @@ class EffortPrice {
   // The variance of a pixel per pass had the medium-to-medium gathers of the first pass taken
   // the accurate model, less that of the image rendered; NaN before a pass paired them.
   double accurate_change_ = std::numeric_limits<double>::quiet_NaN();
+  Probe probe_;
+  bool pairs_pay_ = true;  // until a probe shows otherwise
   std::vector<double> call_demand_[2], split_demand_[kSplitKinds];
   std::vector<SplitRecord> split_tiles_[kSplitKinds];
   SplitRecord split_[kSplitKinds];

@@ -11,13 +11,13 @@ struct EffortRecord {
   // the sum of their rates (EffortCallRate) and of rate x (contribution)^2, an estimate of
   // their second moments had each been taken (docs/maths.md#effort-calls).
   double calls = 0, decided = 0, vrls = 0, call_rate = 0, call_m2 = 0;
-  // Of the samples (effort weight w, unweighted contribution y): how many, the sum of w y;
-  // of the decided calls' samples the predicted second moments (w x bound)^2 / q and the
+  // Of the samples (effort weight w, unweighted contribution y): how many, the sums of w y and
+  // (w y)^2 (given the paths, a bound of the calls' variance: EffortPrice::EndProbe); of the decided calls' samples the predicted second moments (w x bound)^2 / q and the
   // measured w y^2 (their ratio calibrates the price), and w y^2 (w - 1) over the rouletted
   // (w > 1) and the split (w < 1): the variance the decisions add and remove against one
   // sample each (docs/maths.md#effort-decide); of the gathers split into several samples,
   // their within variances and second moments, each from its own samples.
-  double samples = 0, sum = 0, predicted = 0, measured = 0;
+  double samples = 0, sum = 0, sum_sq = 0, predicted = 0, measured = 0;
   double roulette_excess = 0, split_excess = 0, split_within = 0, split_second = 0;
   // Of `auto`'s rule's samples: (w y)^2 (over_equiangular - 1) and (w y)^2 (over_mixture - 1),
   // the variance the pixel would gain had they taken the cheapest model or the mixture, and
@@ -31,7 +31,7 @@ struct EffortRecord {
 
   EffortRecord& operator+=(const EffortRecord& o) {
     calls += o.calls, decided += o.decided, vrls += o.vrls, call_rate += o.call_rate, call_m2 += o.call_m2;
-    samples += o.samples, sum += o.sum, predicted += o.predicted, measured += o.measured;
+    samples += o.samples, sum += o.sum, sum_sq += o.sum_sq, predicted += o.predicted, measured += o.measured;
     roulette_excess += o.roulette_excess, split_excess += o.split_excess;
     split_within += o.split_within, split_second += o.split_second;
     cheapest_excess += o.cheapest_excess, mixture_excess += o.mixture_excess, mixture_measured += o.mixture_measured;

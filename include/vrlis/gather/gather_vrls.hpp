@@ -140,7 +140,7 @@ void GatherEachVrl(const EffortCall<Real>& call, const VrlSegment<Real>* vrls, i
   if (rate < 1 && !CallTakenAt(rate, double(uniform()))) return finish();  // each sample of a taken call weighs 1 / rate more
   // What the record learns from one sample, contribution y to the pixel, effort weight w.
   auto learn = [&](int i, const GatherSample<Real>& s, double w, double y) {
-    record->samples += 1, record->sum += y, call_sum += y;
+    record->samples += 1, record->sum += y, record->sum_sq += y * y, call_sum += y;
     if (!decide && !(s.over_equiangular > 0 || s.over_mixture > 0)) return;  // nothing else to learn from it
     const double bare = y / w, m2 = w * bare * bare;
     if (decide) record->measured += m2, (w > 1 ? record->roulette_excess : record->split_excess) += m2 * (w - 1);
