@@ -176,7 +176,7 @@ class EffortPrice {
 
   // The pilot's probe: its pixels in one row of eight (two in each 8 x 8 tile), which a
   // renderer may render first and hand to EndProbe, so that the rest of the pilot pairs its
-  // pixels only where pairs can pay (docs/maths.md#effort-accurate).
+  // pixels only where pairs can pay (docs/maths.md#effort-probe).
   static bool InProbe(int x, int y) { return InPilot(x, y) && y % 8 == 0; }
 
   // Whether pixel (x, y) of `auto` also gathers its medium-to-medium VRLs under the accurate

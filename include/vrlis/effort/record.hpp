@@ -12,7 +12,8 @@ struct EffortRecord {
   // their second moments had each been taken (docs/maths.md#effort-calls).
   double calls = 0, decided = 0, vrls = 0, call_rate = 0, call_m2 = 0;
   // Of the samples (effort weight w, unweighted contribution y): how many, the sums of w y and
-  // (w y)^2 (given the paths, a bound of the calls' variance: EffortPrice::EndProbe); of the decided calls' samples the predicted second moments (w x bound)^2 / q and the
+  // of (w y)^2 (given the paths, a bound of the calls' variance: EffortPrice::EndProbe); of the
+  // decided calls' samples the predicted second moments (w x bound)^2 / q and the
   // measured w y^2 (their ratio calibrates the price), and w y^2 (w - 1) over the rouletted
   // (w > 1) and the split (w < 1): the variance the decisions add and remove against one
   // sample each (docs/maths.md#effort-decide); of the gathers split into several samples,

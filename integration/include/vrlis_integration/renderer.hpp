@@ -88,7 +88,8 @@ class VrlRenderer : public Renderer {
   const BoundChoice& bound_choice() const { return bounds_; }
 
  private:
-  // A pass, or the effort control's pilot (EffortPrice::InPilot's pixels, its film not kept).
+  // A pass, or the effort control's pilot (EffortPrice::InPilot's pixels, with `auto` its probe
+  // first; its film not kept).
   Film RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilot, PassStats* stats);
 
   vrlis::EffortPrice price_;
