@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
                                        {"first_weighing", {{"v_rule", w.v_rule}, {"t_rule", w.t_rule}, {"changes", changes}}}};
     }
     // Whether the pilot paired pixels under the accurate model, from its probe.
-    summary["effort_models"]["pilot_probe"] = {{"medium_m2", price.probe().medium_m2},
+    summary["effort_models"]["pilot_probe"] = {{"medium_sum_sq", price.probe().medium_sum_sq},
                                                {"variance", price.probe().variance},
                                                {"pairs", price.pairs_pay()}};
   }

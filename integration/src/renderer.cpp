@@ -169,8 +169,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
     price_.EndProbe(values_of(film, probe));
     const Film rest = ForEachPixel(scene_, pixel_settings, seed, pass, pixel,
                                    [&](int x, int y) { return rendered(x, y) && !probe(x, y); });
-    for (std::size_t i = 0; i < pixels; ++i)
-      if (!probe(int(i % std::size_t(settings_.width)), int(i / std::size_t(settings_.width)))) film.pixels[i] = rest.pixels[i];
+    for (std::size_t i = 0; i < pixels; ++i) film.pixels[i] += rest.pixels[i];  // (disjoint; zero where not rendered)
   } else {
     film = ForEachPixel(scene_, pixel_settings, seed, pass, pixel, rendered);
   }

@@ -197,17 +197,17 @@ class EffortPrice {
   // accurate model would not be taken, and the pilot pairs none.
   void EndProbe(const std::vector<double>& values) {
     if (values.size() != pixels_) throw std::invalid_argument("vrlis::EffortPrice::EndProbe: one value per pixel");
-    double m2 = 0, rendered = 0;
+    double sum_sq = 0, rendered = 0;
     for (std::size_t i = 0; i < pixels_; ++i)
-      if (std::isfinite(values[i])) m2 += records_[i].medium.sum_sq, ++rendered;
+      if (std::isfinite(values[i])) sum_sq += records_[i].medium.sum_sq, ++rendered;
     const double variance = NeighbourVariance(values);
-    probe_ = {rendered > 0 ? m2 / rendered : 0, variance};
-    pairs_pay_ = !(variance > 0 && rendered > 0) || probe_.medium_m2 >= (1 - kAccurateMargin) * variance;
+    probe_ = {rendered > 0 ? sum_sq / rendered : 0, variance};
+    pairs_pay_ = !(variance > 0) || probe_.medium_sum_sq >= (1 - kAccurateMargin) * variance;  // no estimate: pair
   }
   // What the probe measured (zeros before it): per pixel, the medium-to-medium samples' sum of
   // squares and the variance; whether the pilot pairs.
   struct Probe {
-    double medium_m2 = 0, variance = 0;
+    double medium_sum_sq = 0, variance = 0;
   };
   const Probe& probe() const { return probe_; }
   bool pairs_pay() const { return pairs_pay_; }
