@@ -47,6 +47,26 @@ def geomean(values):
     return math.exp(statistics.fmean(math.log(v) for v in values))
 
 
+def outside(sampler):
+    """Whether a method's error² / noise² lies outside the range it keeps 95% of the time when
+    unbiased (bench/compare/error_to_noise.hpp)."""
+    low, high = sampler.get("error_range", (0, math.inf))
+    return not low <= sampler["error_to_noise"] <= high
+
+
+def error_cell(sampler):
+    x = f"{sampler['error_to_noise']:.2f}"
+    return f"**{x}**" if outside(sampler) else x
+
+
+def error_range(samplers):
+    """The median over a study's methods of their ranges (they differ by the noise's shape)."""
+    ranges = [s["error_range"] for s in samplers if "error_range" in s]
+    if not ranges:
+        return ""
+    return f"{statistics.median(r[0] for r in ranges):.2f}-{statistics.median(r[1] for r in ranges):.2f}"
+
+
 def cell(r):
     return f"{r[0]:.2f} ({r[1]:.2f}-{r[2]:.2f})"
 
@@ -69,7 +89,7 @@ def tables(runs):
     header = "| study | seed | best fixed published | " + " | ".join(f"`{n}`" for n in names) + " |"
     rule = "|---|---|---|" + "---|" * len(names)
     rows, errors, medians = [header, rule], [], {n: [] for n in names}
-    worst_error = 0
+    flagged, checked = 0, 0
     for run in runs:
         for r in run:
             seed = r["seed"]
@@ -82,11 +102,14 @@ def tables(runs):
                 x = interval(s[n]["to_best_published"])
                 medians[n].append(x[0])
                 cells.append(("**" if x[2] < 1 else "") + cell(x) + ("**" if x[2] < 1 else ""))
-                worst_error = max(worst_error, s[n]["error_to_noise"])
+                flagged += outside(s[n])
+                checked += 1
             rows.append(f"| {r['scene']} g = {round(r['g'], 4)} | {seed} | `{best}` | " + " | ".join(cells) + " |")
             errors.append(f"| {r['scene']} g = {round(r['g'], 4)} | {seed} | " +
-                          " | ".join(f"{s[n]['error_to_noise']:.2f}" if n in s else "" for n in names) + " |")
-    error_table = ["| study | seed | " + " | ".join(f"`{n}`" for n in names) + " |", "|---|---|" + "---|" * len(names)]
+                          " | ".join(error_cell(s[n]) if n in s else "" for n in names) +
+                          f" | {error_range(s.values())} |")
+    error_table = ["| study | seed | " + " | ".join(f"`{n}`" for n in names) + " | range if unbiased |",
+                   "|---|---|" + "---|" * (len(names) + 1)]
     summary = []
     for n in names:
         below = sum(1 for run in runs for r in run
@@ -113,7 +136,7 @@ def tables(runs):
                                         if n in cells and n not in ranked[:3]) +
                     f". The control alone, each method over itself without it: median {statistics.median(all_gains):.2f} "
                     f"(range {min(all_gains):.2f}-{max(all_gains):.2f}; [docs/compare/effort.md](docs/compare/effort.md)).\n")
-    return rows, error_table + errors, summary, gains, worst_error, sentence
+    return rows, error_table + errors, summary, gains, (flagged, checked), sentence
 
 
 def published_cells(page):
@@ -151,7 +174,7 @@ def main():
     ap.add_argument("--previous", help="the published page this run replaces")
     a = ap.parse_args()
     runs = [studies(r) for r in a.runs]
-    rows, errors, summary, gains, worst, sentence = tables(runs)
+    rows, errors, summary, gains, (flagged, checked), sentence = tables(runs)
     previous = []
     if a.previous:
         with open(a.previous) as f:
@@ -195,7 +218,14 @@ def main():
         "",
         *rows,
         "",
-        f"## error² / noise² (about 1 when unbiased; largest {worst:.2f})",
+        "## error² / noise²",
+        "",
+        "The squared error of each method's image against the reference over the noise expected of both: "
+        "about 1 when unbiased, but with the spread of a chi-square on as few degrees of freedom as the "
+        "image's noise has independent directions (a light path lights many pixels at once). The last "
+        "column is the range it keeps 95% of the time when unbiased, from the replicates' and the reference's own spread "
+        "([README.md](README.md#the-reference-and-the-bias-check)); **bold**: outside it "
+        f"({flagged} of {checked}; a row's methods share its seeds and reference, so they leave it together).",
         "",
         *errors,
         "",

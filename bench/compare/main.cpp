@@ -66,7 +66,8 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
     samplers.push_back({{"sampler", SamplerName(s.sampler)}, {"passes", s.passes}, {"seconds_per_pass", s.seconds},
                         {"variance", s.variance}, {"efficiency", s.efficiency}, {"to_baseline", ToJson(s.to_baseline)},
                         {"to_best_published", ToJson(s.to_best_published)},
-                        {"error_to_noise", s.error_to_noise}, {"verdict", s.verdict},
+                        {"error_to_noise", s.error_to_noise.ratio}, {"error_dof", s.error_to_noise.dof},
+                        {"error_range", {s.error_to_noise.low, s.error_to_noise.high}}, {"verdict", s.verdict},
                         {"replicates", {{"variance", s.replicates.variance}, {"seconds", s.replicates.seconds}}},
                         {"progression", Progressions(s.progression)}});
     if (s.to_without_effort) samplers.back()["to_without_effort"] = ToJson(*s.to_without_effort);
@@ -84,7 +85,7 @@ bool WriteStudy(const StudyResult& r, const std::string& dir, std::string* error
                       {"sampler_noise", r.sampler_noise}, {"samplers", samplers},
                       {"reference", {{"mixture", mixture}, {"passes", r.reference_passes},
                                      {"seconds", r.reference_seconds}, {"cached", r.reference_cached},
-                                     {"noise", r.reference_noise}}}};
+                                     {"noise", r.reference_noise}, {"dof", r.reference_dof}}}};
   return vrlis::scenes::WritePng(dir + "/reference.png", reference, exposure, error) &&
          vrlis::scenes::WriteText(dir + "/result.json", j.dump(2) + "\n", error);
 }
@@ -99,13 +100,15 @@ std::string Interval(const vrlis::compare::RatioInterval& r) {
 std::string SummaryTable(const std::vector<StudyResult>& results) {
   std::ostringstream t;
   t << "| scene | g | sampler | passes | ms / pass | variance / pass | efficiency / "
-    << vrlis::compare::kBaseline.sampler.segment.name() << " (95% interval) | error² / noise² | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
+    << vrlis::compare::kBaseline.sampler.segment.name() << " (95% interval) | error² / noise² (range if unbiased) | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : results)
     for (const auto& s : r.samplers) {
+      const vrlis::compare::ErrorToNoise& e = s.error_to_noise;
+      const char* bold = e.Outside() ? "**" : "";
       char line[384];
-      std::snprintf(line, sizeof line, "| %s | %g | %s | %d | %.3g | %.3g | %s | %.2f | %s |\n", r.config.scene.c_str(),
-                    r.config.g, SamplerName(s.sampler).c_str(), s.passes, 1000 * s.seconds, s.variance,
-                    Interval(s.to_baseline).c_str(), s.error_to_noise, s.verdict.c_str());
+      std::snprintf(line, sizeof line, "| %s | %g | %s | %d | %.3g | %.3g | %s | %s%.2f%s (%.2f-%.2f) | %s |\n",
+                    r.config.scene.c_str(), r.config.g, SamplerName(s.sampler).c_str(), s.passes, 1000 * s.seconds,
+                    s.variance, Interval(s.to_baseline).c_str(), bold, e.ratio, bold, e.low, e.high, s.verdict.c_str());
       t << line;
     }
   return t.str();

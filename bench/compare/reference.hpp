@@ -12,14 +12,17 @@ namespace vrlis::compare {
 struct Reference {
   std::vector<double> mean;              // RGB per pixel
   std::vector<double> variance_of_mean;  // its own remaining noise, per pixel and channel
+  double dof = 1;                        // that noise's degrees of freedom (NoiseDof of its passes)
   int passes = 0;
   double seconds = 0;
   bool from_cache = false;
 };
 
-// Renders about `seconds` of passes, the samplers of `mixture` in turn (or loads them from
-// `dir` when a cached render has exactly the settings described by `key`).
+// Renders about `seconds` of passes and at least `min_passes`, the samplers of `mixture` in
+// turn (or loads them from `dir` when a cached render has exactly the settings described by
+// `key`).
 Reference GetReference(PassRenderer& renderer, const std::vector<GatherSamplers>& mixture, double seconds,
-                       const std::string& dir, const std::string& name, const std::string& key, int width, int height);
+                       int min_passes, const std::string& dir, const std::string& name, const std::string& key,
+                       int width, int height);
 
 }  // namespace vrlis::compare

@@ -21,11 +21,16 @@ std::vector<GatherSamplers> Mixture(const StudyConfig& c) {
   return out;
 }
 
+// At least as many passes as every method renders at least: where passes are slow (fog), the
+// methods' minimum outlasts the reference's seconds, and a reference shorter than the images
+// it checks would hold most of the error.
+int ReferencePasses(const StudyConfig& c) { return c.replicates * c.min_passes; }
+
 // Everything a reference image depends on; a cached one is reused only if this matches.
 std::string ReferenceKey(const StudyConfig& c, const vrlis::integration::TransportSettings& t) {
   std::ostringstream key;
-  key << "v3 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
-      << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " samplers=";
+  key << "v4 mixture scene=" << c.scene << " g=" << c.g << " size=" << c.width << "x" << c.height
+      << " vrls=" << c.vrls << " seconds=" << c.reference_seconds << " passes=" << ReferencePasses(c) << " samplers=";
   for (GatherSamplers s : Mixture(c)) key << SamplerName(s) << ",";
   key << " transport=" << t.medium_to_medium << t.medium_to_surface << t.direct << t.single_scattering << t.indirect
       << t.light_caustics << t.first_segment_only << t.surface_to_surface << t.surface_to_medium << "/" << t.max_depth << "/" << t.rr_depth
@@ -112,8 +117,8 @@ StudyResult RunStudy(const StudyConfig& config) {
   std::ostringstream name;
   name << config.scene << "_g" << config.g;
   Reference reference =
-      GetReference(renderer, Mixture(config), config.reference_seconds, config.reference_dir, name.str(),
-                   ReferenceKey(config, scene.settings.transport), config.width, config.height);
+      GetReference(renderer, Mixture(config), config.reference_seconds, ReferencePasses(config), config.reference_dir,
+                   name.str(), ReferenceKey(config, scene.settings.transport), config.width, config.height);
 
   std::vector<std::uint64_t> seeds(replicates);
   for (std::size_t r = 0; r < replicates; ++r) seeds[r] = vrlis::integration::SplitMix64(config.seed * 1000003 + r);
@@ -166,6 +171,7 @@ StudyResult RunStudy(const StudyConfig& config) {
   out.reference_seconds = reference.seconds;
   out.reference_cached = reference.from_cache;
   out.reference_noise = MeanOf(reference.variance_of_mean);
+  out.reference_dof = reference.dof;
   for (Runner& run : runners) {
     SamplerResult s;
     s.sampler = run.sampler;
@@ -176,13 +182,10 @@ StudyResult RunStudy(const StudyConfig& config) {
     s.efficiency = Efficiency(s.replicates);
     s.image = run.all.Mean();
     std::vector<double> noise = run.all.VarianceOfMean();
-    double error = 0, expected = 0;
-    for (std::size_t i = 0; i < values; ++i) {
-      double d = s.image[i] - reference.mean[i];
-      error += d * d;
-      expected += noise[i] + reference.variance_of_mean[i];
-    }
-    s.error_to_noise = expected > 0 ? error / expected : 0;
+    std::vector<std::vector<double>> replicate_means;
+    for (const PassStatistics& rep : run.replicates) replicate_means.push_back(rep.Mean());
+    s.error_to_noise =
+        ErrorAgainstNoise(replicate_means, noise, reference.mean, reference.variance_of_mean, reference.dof);
     s.progression = std::move(run.progression);
     out.sampler_noise += MeanOf(noise) / static_cast<double>(runners.size());
     out.samplers.push_back(std::move(s));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "efficiency.hpp"
+#include "error_to_noise.hpp"
 #include "render_call.hpp"
 
 namespace vrlis::compare {
@@ -59,9 +60,9 @@ struct SamplerResult {
   // Efficiency over the same sampler's without the effort control (with the control on, and
   // that sampler in the study, only).
   std::optional<RatioInterval> to_without_effort;
-  // Mean squared error against the reference over the noise expected of both images:
-  // about 1 for an unbiased sampler, clearly above 1 for a biased one.
-  double error_to_noise = 0;
+  // Squared error against the reference over the noise expected of both images, and the
+  // range it keeps when unbiased (error_to_noise.hpp).
+  ErrorToNoise error_to_noise;
   std::string verdict;  // "best", "tie" or empty
   std::vector<double> image;
   std::vector<Progression> progression;  // per replicate
@@ -80,6 +81,7 @@ struct StudyResult {
   double reference_seconds = 0;
   bool reference_cached = false;
   double reference_noise = 0;  // mean over pixels of the reference's variance of the mean
+  double reference_dof = 1;    // its noise's degrees of freedom (NoiseDof)
   double sampler_noise = 0;    // the same for the samplers' images, averaged over samplers
 };
 
