@@ -237,6 +237,12 @@ TEST_CASE("auto's early-outs never change its decision, and every model is chose
   }
   INFO("equiangular " << chosen[0] << ", novak " << chosen[1] << ", full-product " << chosen[2]);
   for (int n : chosen) CHECK(n > 250);
+  // What the early-outs' order assumes, in every table of costs the rule may use.
+  for (const auto& lanes : {vrlis::work_costs::kBuilt, vrlis::work_costs::kAvx2})
+    for (bool surface : {false, true}) {
+      const auto costs = vrlis::AutoCosts::Of(lanes, surface);
+      CHECK(costs.novak <= costs.full_product);
+    }
 }
 
 TEST_CASE("auto's decisions on constructed queries") {

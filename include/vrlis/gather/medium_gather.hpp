@@ -123,7 +123,7 @@ struct FitsInLanes<SegmentSampler<D>, std::void_t<typename D::template TargetLan
 // one-at-a-time numbers (lane_math.hpp); so do the fits of every sampler whose distribution
 // has a form in lanes (FitsInLanes: Novák's and FullProduct's, their closed-form inversions
 // one gather at a time; the Cauchy samplers' fits and inversions, their sines one gather at a
-// time; `auto`'s rule in lanes on a bounded segment (AutoAngle::ChooseLanes), then each
+// time; `auto`'s rule in lanes (AutoAngle::ChooseLanes), then each
 // model's fits in lanes of their own), the others' one gather at a time. One
 // gather is a long chain of dependent operations and one vector of lanes is still one chain;
 // the gathers of a phase are independent, and several vectors of them let the processor
@@ -183,19 +183,12 @@ template <typename StepOneSampler, typename CameraSampler, typename Real>
       take(d);
     } else if constexpr (kAuto) {
       AutoModel models[kSize];
-      if (std::isfinite(tmax)) {
-        Real depth[kSize];
+      const bool bounded = std::isfinite(tmax);
+      Real depth[kSize];
+      if (bounded)
         for (int i = 0; i < lanes; ++i) depth[i] = DepthGrowth<true>(vrl[i].at(vt[i]), origin, dir, tmin, tmax);
-        AutoAngle<Real>::template ChooseLanes<kSize>(frames, vrl.dx, vrl.dy, vrl.dz, dir, medium.g, medium.sigma_t,
-                                                     depth, lanes, models);
-      } else {  // (the transmittance's moment on an unbounded segment: one query at a time)
-        std::fill(models, models + lanes, AutoModel::Equiangular);
-        for (int i = 0; i < n; ++i)
-          if (detail::Usable(v[i])) {
-            const SegmentQuery<Real> q = step_query(i);
-            models[i] = AutoAngle<Real>::Choose(q, AngleDomain<Real>(q, frames[i]));
-          }
-      }
+      AutoAngle<Real>::template ChooseLanes<kSize>(frames, vrl.dx, vrl.dy, vrl.dz, dir, medium.g, medium.sigma_t,
+                                                   bounded ? depth : nullptr, lanes, models);
       for (int i = 0; i < lanes; ++i) {  // (nothing sampled: the cheapest)
         const bool usable = detail::Usable(SegmentSample<Real>{vt[i], vpdf[i]}), sampled = (i < n) & usable;
         models[i] = sampled ? models[i] : AutoModel::Equiangular;

@@ -151,28 +151,49 @@ Real UniformVarianceBound(Real rho) {
 }
 
 // 1 - z e^z E1(z) for z > 0 (Abramowitz and Stegun 5.1.53 below one, 5.1.56 above, both
-// within 5e-5): it falls from 1 at 0 like 1 / z at infinity.
-inline double ExponentialIntegralComplement(double z) {
-  if (z < 1) {
-    double e1 = -std::log(z) - 0.57721566 +
-                z * (0.99999193 + z * (-0.24991055 + z * (0.05519968 + z * (-0.00976004 + z * 0.00107857))));
-    return 1 - z * std::exp(z) * e1;
+// within 5e-5): it falls from 1 at 0 like 1 / z at infinity. kLanes: both computed and
+// picked, for a loop over a batch's queries; in float log z is Log1pLanes(z - 1), whose
+// rounding of z - 1 (an ulp of 1) the product with z makes negligible.
+template <bool kLanes = false, typename T>
+[[gnu::always_inline]] inline T ExponentialIntegralComplement(T z) {
+  auto small = [z] {
+    const T log_z = kLanes ? Log1pLanes(z - 1) : std::log(z);
+    const T e1 = -log_z - T(0.57721566) +
+                 z * (T(0.99999193) + z * (T(-0.24991055) + z * (T(0.05519968) + z * (T(-0.00976004) + z * T(0.00107857)))));
+    return 1 - z * (kLanes ? ExpLanes(z) : std::exp(z)) * e1;
+  };
+  // (Over z in numerator and denominator: no z^2 to overflow a float.)
+  auto large = [z] { return (T(0.995924) + T(1.430913) / z) / (z + T(3.330657) + T(1.681534) / z); };
+  if constexpr (kLanes) {
+    return SelectLanes(z < 1, small(), large());
+  } else {
+    return z < 1 ? small() : large();
   }
-  return (0.995924 * z + 1.430913) / (z * (z + 3.330657) + 1.681534);
 }
 
 // The transmittance's own second moment under equiangular sampling, W Int T^2 / (Int T)^2
-// over the angle interval of width W, on an unbounded segment (where its ratio is infinite).
+// over the angle interval of width W, on an unbounded segment (where its ratio is infinite),
+// from the angle domain's h and W.
 // With the half-angle u = pi/2 - chi/2 and tan(chi/2) = cot u ~ 1/u, the optical depth is
 // sigma_t h (1/u - 1/U) on u in (0, U], U = W / 2, and Int_0^U e^(-c (1/u - 1/U)) du =
 // U (1 - z e^z E1(z)), z = c / U: the moment is C(2z) / C(z)^2 with z = 2 sigma_t h / W
-// (docs/maths.md#auto). A prediction (cot u < 1/u puts it a little low where z is large), not a bound.
+// (docs/maths.md#auto). A prediction (cot u < 1/u puts it a little low where z is large), not a
+// bound. kLanes: branch-free (AutoAngle::ChooseLanes).
+template <bool kLanes = false, typename T>
+[[gnu::always_inline]] inline T UnboundedTransmittanceMoment(T sigma_t, T h, T width) {
+  constexpr T kInf = std::numeric_limits<T>::infinity();
+  const T z = 2 * sigma_t * h / width;
+  if constexpr (!kLanes) {
+    if (!(z > 0)) return 1;
+    if (!std::isfinite(z)) return kInf;
+  }
+  const T moment = ExponentialIntegralComplement<kLanes>(2 * z) / Sqr(ExponentialIntegralComplement<kLanes>(z));
+  const T at_least_one = Pick<kLanes>(moment > 1, moment, T(1));  // (NaN: 1, as std::max(1, NaN))
+  return Pick<kLanes>(!(z > 0), T(1), Pick<kLanes>(z < kInf, at_least_one, kInf));
+}
 template <typename Real>
 double UnboundedTransmittanceMoment(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom) {
-  double z = 2 * double(q.sigma_t) * double(dom.h()) / double(dom.width());
-  if (!(z > 0)) return 1;
-  if (!std::isfinite(z)) return std::numeric_limits<double>::infinity();
-  return std::max(1.0, ExponentialIntegralComplement(2 * z) / Sqr(ExponentialIntegralComplement(z)));
+  return UnboundedTransmittanceMoment(double(q.sigma_t), double(dom.h()), double(dom.width()));
 }
 
 // The transmittance's factor in the models' second moments: Kantorovich's 1 + B(rho_T) on a
@@ -283,6 +304,11 @@ class AutoAngle {
   static AutoModel Choose(const SegmentQuery<Real>& q, const AngleDomain<Real>& dom,
                           std::optional<PhaseProduct<Real>>* phase = nullptr) {
     double ratio = double(TransmittanceRangeRatio(q)), moment = TransmittanceMoment(q, dom, ratio);
+    const AutoCosts costs = AutoCosts::InUse(q.lobe.kind);
+    // The early-outs exclude each other (every bound of equiangular's moment is at least the
+    // transmittance's, and Novák costs no more than FullProduct, as the equiangular one
+    // assumes): the one that looks at no lobe goes first.
+    if (AutoRule::FullProductSuffices(moment, costs)) return AutoModel::FullProduct;
     double point = q.lobe.kind == LobeKind::HenyeyGreenstein ? double(LobeRangeRatioBound(q.lobe.g))
                    : q.lobe.kind == LobeKind::None          ? 1.0
                                                             : std::numeric_limits<double>::infinity();
@@ -291,22 +317,19 @@ class AutoAngle {
     const double phases = q.lobe.kind == LobeKind::ClampedCosine && std::isfinite(q.tmax)
                               ? ClampedCosineEndsRatioBound(q)
                               : double(LobeRangeRatioBound(q.g)) * point;
-    const AutoCosts costs = AutoCosts::InUse(q.lobe.kind);
     if (AutoRule::EquiangularSuffices(phases, ratio, moment, costs)) return AutoModel::Equiangular;
-    if (AutoRule::FullProductSuffices(moment, costs)) return AutoModel::FullProduct;
     std::optional<PhaseProduct<Real>> own;
     const PhaseProduct<Real>& built = (phase ? *phase : own).emplace(q, dom);
     return AutoRule::Cheapest(AutoRule::Scores(AutoRule::EquiangularMoment(dom, built, ratio, moment), moment, costs));
   }
 
   // Choose for a batch of the medium gathers' queries in vector lanes (their point lobe a
-  // Henyey-Greenstein lobe with the segment's g, their segment bounded), from their angle
-  // frames, VRL directions (axis_*) and DepthGrowth. Where the early-outs decide every lane
-  // (a medium whose transmittance alone asks for FullProduct, say) no lobe is evaluated;
-  // else every lane takes the whole rule (the early-outs never change a decision) on the
-  // lanes' phase products. Inside the interval the point lobe can only reach its peak and
-  // antipode values, which need no angle. The same decisions as Choose but where rounding
-  // parts two scores that tie.
+  // Henyey-Greenstein lobe with the segment's g), from their angle frames, VRL directions
+  // (axis_*) and, on a bounded segment, DepthGrowth (depth; null on an unbounded one).
+  // First the early-outs in every lane; the lanes they leave (none where the transmittance
+  // alone asks for FullProduct, say) take the whole rule (WholeRule) on their phase products,
+  // gathered into lanes of their own unless they are all of them. The same decisions as
+  // Choose but where rounding parts two scores that tie.
   template <int kSize>
   static void ChooseLanes(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y,
                           const Real* axis_z, Vec3<Real> dir, Real g, Real sigma_t, const Real* depth, int lanes,
@@ -315,17 +338,48 @@ class AutoAngle {
     const Real phases_bound = Sqr(LobeRangeRatioBound(g));
     const AutoCosts costs = AutoCosts::InUse(LobeKind::HenyeyGreenstein);
     Real ratio[kSize], moment[kSize];
-    int undecided = 0;
+    if (depth) {
+      for (int i = 0; i < lanes; ++i)
+        ratio[i] = ExpLanes(sigma_t * depth[i]), moment[i] = 1 + UniformVarianceBound<true>(ratio[i]);
+    } else {
+      for (int i = 0; i < lanes; ++i)
+        ratio[i] = sigma_t > 0 ? kInf : Real(1),
+        moment[i] = UnboundedTransmittanceMoment<true>(sigma_t, frames.h[i], frames.width[i]);
+    }
+    int undecided = 0, index[kSize];  // the lanes the early-outs leave, in order
     for (int i = 0; i < lanes; ++i) {
-      ratio[i] = ExpLanes(sigma_t * depth[i]), moment[i] = 1 + UniformVarianceBound<true>(ratio[i]);
       const bool equiangular = AutoRule::EquiangularSuffices<true>(phases_bound, ratio[i], moment[i], costs);
       const bool full = AutoRule::FullProductSuffices<true>(moment[i], costs);
       models[i] = AutoModel(2 * int(full & !equiangular));
+      index[undecided] = i;
       undecided += int(!equiangular & !full);
     }
     if (undecided == 0) return;
+    if (undecided == lanes) return WholeRule(frames, axis_x, axis_y, axis_z, dir, g, ratio, moment, lanes, costs, models);
+    // The others, gathered into lanes of their own (the unused ones repeat the first).
+    const int whole = detail::WholeLanes(undecided);
+    detail::AngleFrameLanes<Real, kSize> gathered;
+    Real x[kSize], y[kSize], z[kSize], gathered_ratio[kSize], gathered_moment[kSize];
+    for (int j = 0; j < whole; ++j) {
+      const int i = index[j < undecided ? j : 0];
+      gathered.set(j, frames[i]);
+      x[j] = axis_x[i], y[j] = axis_y[i], z[j] = axis_z[i], gathered_ratio[j] = ratio[i], gathered_moment[j] = moment[i];
+    }
+    AutoModel decided[kSize];
+    WholeRule(gathered, x, y, z, dir, g, gathered_ratio, gathered_moment, whole, costs, decided);
+    for (int j = 0; j < undecided; ++j) models[index[j]] = decided[j];
+  }
+
+  // ChooseLanes' whole rule on every lane of a batch, from the lanes' transmittance ratios
+  // and moments: the phases' ratio from the lobes at the interval's ends and, where inside
+  // it, at the point lobe's peak and antipode values, which need no angle.
+  template <int kSize>
+  static void WholeRule(const detail::AngleFrameLanes<Real, kSize>& frames, const Real* axis_x, const Real* axis_y,
+                        const Real* axis_z, Vec3<Real> dir, Real g, const Real* ratio, const Real* moment, int lanes,
+                        const AutoCosts& costs, AutoModel* models) {
+    constexpr Real kInf = std::numeric_limits<Real>::infinity();
     typename PhaseProduct<Real>::template Lanes<kSize, false> phase;
-    phase.template build<Accuracy::Full>(frames, axis_x, axis_y, axis_z, dir, g, sigma_t, lanes);
+    phase.template build<Accuracy::Full>(frames, axis_x, axis_y, axis_z, dir, g, Real(0), lanes);
     for (int i = 0; i < lanes; ++i) {
       const Real width = phase.width[i], r = phase.r[i], one_minus_r = phase.one_minus_r[i];
       auto segment = [&](Real delta) {  // PhaseProduct::segment_lobe
