@@ -7,15 +7,23 @@
 #include <boost/math/distributions/chi_squared.hpp>
 
 namespace vrlis::compare {
+namespace {
 
-double NoiseDof(const std::vector<std::vector<double>>& samples) {
+// The mean of at least 3 images of one size.
+std::vector<double> MeanImage(const std::vector<std::vector<double>>& samples) {
   const std::size_t r = samples.size(), values = r ? samples[0].size() : 0;
-  if (r < 3) throw std::invalid_argument("NoiseDof needs at least 3 samples");
+  if (r < 3) throw std::invalid_argument("the noise's degrees of freedom need at least 3 images");
   std::vector<double> mean(values, 0.0);
   for (const auto& x : samples) {
-    if (x.size() != values) throw std::invalid_argument("NoiseDof needs images of one size");
+    if (x.size() != values) throw std::invalid_argument("the noise's degrees of freedom need images of one size");
     for (std::size_t i = 0; i < values; ++i) mean[i] += x[i] / static_cast<double>(r);
   }
+  return mean;
+}
+
+// NoiseDof of samples whose mean (MeanImage) is given.
+double DofAbout(const std::vector<std::vector<double>>& samples, const std::vector<double>& mean) {
+  const std::size_t r = samples.size(), values = mean.size();
   // The sample covariance S over n = r - 1 degrees of freedom, through the Gram matrix of the
   // deviations (r x r, not values x values): tr S and tr S^2, then the unbiased tr(Sigma^2)
   // and tr(Sigma)^2 from them.
@@ -37,17 +45,19 @@ double NoiseDof(const std::vector<std::vector<double>>& samples) {
   return sigma_sq > 0 && trace_squared > 0 ? std::clamp(trace_squared / sigma_sq, 1.0, most) : most;
 }
 
+}  // namespace
+
+double NoiseDof(const std::vector<std::vector<double>>& samples) { return DofAbout(samples, MeanImage(samples)); }
+
 ErrorToNoise ErrorAgainstNoise(const std::vector<std::vector<double>>& replicate_means,
                                const std::vector<double>& noise, const std::vector<double>& reference,
                                const std::vector<double>& reference_noise, double reference_dof,
                                double confidence) {
   const std::size_t values = reference.size();
-  if (noise.size() != values || reference_noise.size() != values || !(reference_dof >= 1))
+  const std::vector<double> pooled = MeanImage(replicate_means);
+  if (pooled.size() != values || noise.size() != values || reference_noise.size() != values || !(reference_dof >= 1))
     throw std::invalid_argument("ErrorAgainstNoise needs images of one size and a reference's k >= 1");
-  const double dof = NoiseDof(replicate_means);  // (checks the replicates)
-  std::vector<double> pooled(values, 0.0);
-  for (const auto& m : replicate_means)
-    for (std::size_t i = 0; i < values; ++i) pooled[i] += m[i] / static_cast<double>(replicate_means.size());
+  const double dof = DofAbout(replicate_means, pooled);
   ErrorToNoise out;
   double error = 0, own = 0, of_reference = 0;
   for (std::size_t i = 0; i < values; ++i) {

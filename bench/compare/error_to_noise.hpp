@@ -6,7 +6,8 @@
 // The range is not a constant. An image's errors are correlated across its pixels (a light
 // path lights many of them), so the summed squared error is a sum of few independent squares,
 // about chi-square on k degrees of freedom over k with k = tr(C)^2 / tr(C^2) for the error's
-// covariance C, and k can be as small as 2 or 3 (fog lit through a dense medium). k comes from
+// covariance C, and k can be as small as 4 or 5 (fog and corner, lit through a dense medium:
+// an unbiased ratio then lands anywhere in about 0.2-2.5). k comes from
 // the images' own samples: the deviations of a study's replicate means from their mean, and of
 // a reference's passes from theirs, give tr(C) and tr(C^2) (each unbiased for Gaussian
 // samples, Bai and Saranadasa 1996).

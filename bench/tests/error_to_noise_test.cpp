@@ -1,6 +1,6 @@
 // The equal-time study's agreement check (bench/compare/error_to_noise.hpp): on unbiased
 // images whose errors are correlated across pixels, the ratio leaves its range about as often
-// as the range claims, where a fixed range (0.5-2) fails a third of them; a bias is flagged.
+// as the range claims, where a fixed range (0.5-2) fails half of them; a bias is flagged.
 #include <cmath>
 #include <random>
 #include <vector>
