@@ -126,8 +126,8 @@ int main(int argc, char** argv) {
   app.add_option("--time", seconds, "Render for this many seconds instead of --spp passes")->excludes(spp_opt);
   app.add_option("--vrls", vrls, "Light paths per pass")->capture_default_str();
   app.add_option("--effort", effort, "on: Russian roulette and splitting of every VRL gather by a price of variance "
-                                     "learned from earlier passes, and with auto both steps' models by it "
-                                     "(docs/maths.md#effort); off: every VRL gathered once")
+                                     "learned from earlier passes (docs/maths.md#effort); off: every VRL gathered once. "
+                                     "Either way auto takes each gather kind's model for the image by that price")
       ->capture_default_str();
   app.add_option("--marginal-fraction", marginal_fraction,
                  "With +marginal: the share of the medium-to-medium gathers, those of the largest predicted second "
@@ -323,10 +323,9 @@ int main(int argc, char** argv) {
       {"gathers_per_second", pass_seconds > 0 ? double(gathers) / pass_seconds : 0.0}};
   if (timed) summary["time_budget_s"] = seconds;
   if (!pilot.empty()) summary["vrl_bound_pilot"] = pilot;
-  // With `auto` and the control on: the model each gather kind took at the end, and what the
-  // first price weighed the models by (per pixel and pass; docs/maths.md#effort-models).
-  const bool weighs_models = method->segment == vrlis::SegmentSamplers::Of<vrlis::AutoEntry>() && effort == "on";
-  if (auto* vrl = dynamic_cast<vrlis::integration::VrlRenderer*>(renderer.get()); vrl && weighs_models) {
+  // With `auto`: the model each gather kind took at the end, and what the first price weighed
+  // the models by (per pixel and pass; docs/maths.md#effort-models).
+  if (auto* vrl = dynamic_cast<vrlis::integration::VrlRenderer*>(renderer.get()); vrl && vrl->ModelsPriced()) {
     const vrlis::EffortPrice& price = vrl->effort_price();
     auto name = [](vrlis::EffortModel m) {
       constexpr const char* kNames[] = {"rule", "accurate", "cheapest", "mixture"};  // in EffortModel's order

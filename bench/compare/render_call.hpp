@@ -61,8 +61,9 @@ inline const Method kBaseline{vrlis::FixedSamplers<lab::Baseline>{}, false};
 class PassRenderer {
  public:
   PassRenderer(const vrlis::integration::Scene& scene, const vrlis::integration::RenderSettings& settings) : scene_(scene), settings_(settings) {}
-  // With the effort control on, `price` holds what the passes before this one taught it
-  // (one per replicate: a pass's decisions see only earlier passes of its own render), and
+  // With the effort control on or `auto` (whose image model it chooses either way), `price`
+  // holds what the passes before this one taught it (one per replicate: a pass's decisions
+  // see only earlier passes of its own render; a renderer that prices nothing ignores it), and
   // `marginal_scores` likewise which gathers VrlMarginal fits (without it every pass is a
   // first pass and fits every gather).
   vrlis::integration::Film Render(const Method& method, std::uint64_t seed, std::uint64_t pass, double* seconds,
@@ -72,12 +73,12 @@ class PassRenderer {
     settings.transport.sampling = method.sampler;
     settings.transport.effort.on = method.effort;
     vrlis::integration::VrlRenderer renderer(scene_, settings);
-    if (method.effort && price) renderer.set_effort_price(*price);
+    if (price) renderer.set_effort_price(*price);
     if (marginal_scores) renderer.set_marginal_scores(*marginal_scores);
     auto start = std::chrono::steady_clock::now();
     vrlis::integration::Film film = renderer.RenderPass(seed, pass, nullptr);
     *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (method.effort && price) *price = renderer.effort_price();
+    if (price) *price = renderer.effort_price();
     if (marginal_scores) *marginal_scores = renderer.marginal_scores();
     return film;
   }

@@ -54,7 +54,7 @@ struct Runner {
   PassStatistics all;
   std::vector<double> seconds;  // per replicate
   std::vector<Progression> progression;
-  std::vector<vrlis::EffortPrice> prices;  // per replicate, with the effort control on
+  std::vector<vrlis::EffortPrice> prices;  // per replicate, with the effort control on or `auto`
   std::vector<vrlis::ScoreOctaves> marginal_scores;     // per replicate, with VrlMarginal as step one
 
   int per_replicate = 0;  // passes in each replicate

@@ -61,12 +61,17 @@ double Since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
+bool VrlRenderer::ModelsPriced() const {
+  return settings_.transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
+}
+bool VrlRenderer::Priced() const { return settings_.transport.effort.on || ModelsPriced(); }
+
 Film VrlRenderer::RenderPass(std::uint64_t seed, std::uint64_t pass, PassStats* stats) {
   // Before its first price the effort control learns one from a pilot over a quarter of the
   // pixels, which the image does not keep: taking every gather once in every pixel, as the
   // first pass did, cost the room scene's 16-pass render half its time
   // (docs/maths.md#effort-pilot). Its cost is the pass's.
-  if (!(settings_.transport.effort.on && price_.PilotDue())) return RenderPixels(seed, pass, false, stats);
+  if (!(Priced() && price_.PilotDue())) return RenderPixels(seed, pass, false, stats);
   PassStats pilot;
   RenderPixels(seed, kPilotPass, true, &pilot);
   Film film = RenderPixels(seed, pass, false, stats);
@@ -103,9 +108,15 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
   const bool scored = transport.sampling.vrl == vrlis::VrlSamplers::Of<vrlis::VrlMarginalEntry>() &&
                       transport.marginal_fraction < 1;
   if (scored && marginal_scores_.total() > 0) base.marginal_threshold = marginal_scores_.Threshold(transport.marginal_fraction);
-  if (effort.on) price_.BeginPass(base);
+  // With the control off `auto` still takes the image's model from the price, which then decides nothing else.
+  const bool priced = Priced();
+  if (priced) {
+    vrlis::EffortSettings models = base;
+    models.on = true, models.decide = effort.on;
+    price_.BeginPass(models);
+  }
   tbb::enumerable_thread_specific<vrlis::ScoreOctaves> pass_scores;
-  const bool pairs_models = transport.sampling == vrlis::GatherSamplers{vrlis::SegmentSamplers::Of<vrlis::AutoEntry>()};
+  const bool pairs_models = ModelsPriced();
   // The pilot's pixel points are independent of every pass's (stratified points are a sequence over the passes).
   RenderSettings pixel_settings = settings_;
   if (pilot) pixel_settings.pixel_samples = PixelSamples::Independent;
@@ -124,7 +135,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
       options.query_log = transport.query_log, options.weight_log = transport.weight_log;
       options.bound = pixel_transport.vrl_bound;
       if (scored) options.marginal_scores = &pass_scores.local();
-      if (effort.on) {
+      if (priced) {
         Rng choice(seed, pass, i, StreamPurpose::EffortModel);
         options.effort = price_.Pixel(x, y, [&] { return choice.Uniform(); });
         // In the pilot a share of the pixels of `auto`, both of a horizontal pair, also
@@ -175,8 +186,8 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
   }
   double other = 0, work = light_work;
   for (std::size_t i = 0; i < pixels; ++i) other += pixel_work[i], work += pixel_work[i] + gather_work[i];
-  std::vector<double> values = effort.on || bounds_.active() ? values_of(film, rendered) : std::vector<double>{};
-  if (effort.on) price_.EndPass(values, other);
+  std::vector<double> values = priced || bounds_.active() ? values_of(film, rendered) : std::vector<double>{};
+  if (priced) price_.EndPass(values, other);
   if (bounds_.active() && !pilot) {
     for (std::size_t i = 0; i < pixels; ++i) pixel_work[i] += gather_work[i];
     bounds_.EndPass(settings_.width, values, pixel_work, light_work);

@@ -23,6 +23,10 @@
 // - `auto` takes a model cheaper than its rule where the variance it adds is worth less than
 //   the time it saves: in room (gathers without variance) equiangular or the mixture, and not
 //   equiangular in the bidirectional scene at g = 0.9;
+// - with the control off, `auto` still takes the image's model by the price (room: the cheapest,
+//   whose pass is equiangular sampling's but in the pixels that explore the rule) and nothing
+//   else: no gather decided, no split count asked, every weight 1 (the same price with the
+//   control on decides), a pass a function of that price;
 // - `auto` takes the accurate model where its variance is worth its time: in the
 //   bidirectional scene at g = 0, not in room; on synthetic passes where the first pass's pairs
 //   show it worth its time, within a margin, and then for good; a pair changes no gather and its
@@ -327,6 +331,76 @@ TEST_CASE("effort: auto weighs the models by the variance each adds or removes",
   REQUIRE(known(plain));
   CHECK(plain.accurate.dv < -0.6 * plain.v_rule);
   CHECK(plain.accurate.dv > -plain.v_rule);  // a variance cannot fall below 0
+}
+
+TEST_CASE("effort off: auto still takes the image's model by the price, and every gather once",
+          "[render][effort]") {
+  // With the control off `auto` learns the image's model from the passes before (room's gathers
+  // hold almost none of the variance: the cheapest model, as with the control on)
+  // and nothing else: no gather decided, no split kind given a count, every effort weight 1.
+  auto built = vrlis::scenes::BuildScene("room", {});
+  REQUIRE(built);
+  vrlis::integration::WeightLog log;
+  vrlis::integration::RenderSettings s = Settings(*built, 16, false);
+  s.transport.sampling = *vrlis::ParseGatherSamplers("auto");
+  s.transport.weight_log = &log;
+  vrlis::integration::VrlRenderer r(built->scene, s);
+  for (std::uint64_t pass = 0; pass < 3; ++pass) r.RenderPass(1, pass, nullptr);
+  const vrlis::EffortPrice learned = r.effort_price();
+  const vrlis::EffortModel medium = learned.model(vrlis::GatherKind::Medium);
+  INFO("medium-to-medium model " << int(medium) << "; " << log.samples() << " samples, largest effort weight "
+                                 << log.largest_effort_weight());
+  REQUIRE(learned.passes() == 4);  // the pilot's and three
+  CHECK(medium == vrlis::EffortModel::Cheapest);
+  CHECK(learned.model(vrlis::GatherKind::Surface) == vrlis::EffortModel::Cheapest);
+  CHECK(log.samples() > 0);
+  CHECK(log.largest_effort_weight() == 1.f);
+  // The price's settings for every pixel, on the numbers that decide most (u = 0: the trial's
+  // share would decide), and the same price with the control on, which must decide (a sabotage).
+  auto settings = [&](bool on) {
+    vrlis::EffortPrice price = learned;
+    vrlis::EffortSettings base = s.transport.effort;
+    base.on = true, base.decide = on;
+    price.BeginPass(base);
+    int decided = 0, counts = 0;
+    for (int y = 0; y < s.height; ++y)
+      for (int x = 0; x < s.width; ++x) {
+        const vrlis::PixelEffort p = price.Pixel(x, y, [] { return 0.0; });
+        decided += p.medium.decide + p.surface.decide;
+        for (double rate : p.split_rates) counts += !std::isnan(rate);
+      }
+    return std::pair{decided, counts};
+  };
+  const auto [decided, counts] = settings(false);
+  const auto [decided_on, counts_on] = settings(true);
+  INFO("gathers decided " << decided << " (the control on: " << decided_on << "), split counts asked " << counts
+                          << " (" << counts_on << ")");
+  CHECK(decided == 0);
+  CHECK(counts == 0);
+  CHECK(decided_on > 0);
+  CHECK(counts_on > 0);
+  // A pass is a function of the price learned from the passes before it, at any thread count.
+  s.transport.weight_log = nullptr;
+  vrlis::integration::VrlRenderer a(built->scene, s);
+  a.set_effort_price(learned);
+  const vrlis::integration::Film original = a.RenderPass(1, 3, nullptr);
+  for (int threads : {1, 4}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    vrlis::integration::VrlRenderer b(built->scene, s);
+    b.set_effort_price(learned);
+    CHECK(Same(b.RenderPass(1, 3, nullptr), original));
+  }
+  // The model acts: the cheapest model in both gathers, the pass is equiangular sampling's
+  // but in the few pixels that explore the rule (EffortPrice::kExplore, 1 in 512 per gather kind).
+  {
+    s.transport.sampling = *vrlis::ParseGatherSamplers("equiangular");
+    const vrlis::integration::Film fixed = vrlis::integration::VrlRenderer(built->scene, s).RenderPass(1, 3, nullptr);
+    int differ = 0;
+    for (std::size_t i = 0; i < fixed.pixels.size(); ++i)
+      differ += std::memcmp(&fixed.pixels[i], &original.pixels[i], sizeof fixed.pixels[i]) != 0;
+    INFO(differ << " pixels differ from equiangular sampling's");
+    CHECK(differ <= 4);
+  }
 }
 
 // A pair (GatherOptions::pair) is for the statistics alone: the call returns what it returns

@@ -14,6 +14,10 @@
 //     price.EndPass(values);
 //   }
 //
+// With base.decide false (BeginPass) the price chooses `auto`'s image model alone: no gather
+// is decided and no split kind is asked for a count, so every gather is taken once with
+// weight 1, as without the control (the fixed-effort `auto`; docs/maths.md#effort-cheapest).
+//
 // A renderer may first render a pilot (while PilotDue()): the pixels InPilot names, a quarter,
 // on numbers of no pass, their values handed to EndPass (the others' not finite) and not kept
 // in the image; the first pass then is already priced (docs/maths.md#effort-pilot). With
@@ -129,7 +133,8 @@ class EffortPrice {
   }
 
   // A new pass whose calls take `base` (its `on` true; the rest the renderer's, e.g.
-  // marginal_threshold) with what the price learned; every pixel's record emptied.
+  // marginal_threshold, and `decide` false for the image's model alone) with what the price
+  // learned; every pixel's record emptied.
   void BeginPass(const EffortSettings& base) {
     base_ = base;
     std::fill(records_.begin(), records_.end(), PixelRecord{});
@@ -153,13 +158,13 @@ class EffortPrice {
       e = base_;
       e.price = price_[k], e.within = Within(k), e.call_demand = call_demand_[k][Tile(x, y)];
       e.model = Model(k, u[k]);
-      e.decide = Decide(k, u[2 + k]);
+      e.decide = base_.decide && Decide(k, u[2 + k]);
       e.measure_mixture = e.model == EffortModel::Chosen && (u[4 + k] < FirstPass(kMeasure) || model_[k] != EffortModel::Chosen);
     }
     p.pair = p.medium;
     p.pair.decide = p.pair.measure_mixture = false;
     p.pair.model = EffortModel::Accurate;
-    for (int k = 0; k < kSplitKinds; ++k)  // (NaN stays NaN: std::clamp would not keep it)
+    for (int k = 0; base_.decide && k < kSplitKinds; ++k)  // (NaN stays NaN: std::clamp would not keep it)
       if (const double demand = split_demand_[k][Tile(x, y)]; !std::isnan(demand))
         p.split_rates[k] = std::clamp(demand, kSplitFloor[k], std::max(kSplitFloor[k], base_.ceiling));
     return p;

@@ -67,12 +67,12 @@ class Renderer {
 };
 
 // The bidirectional VRL pipeline: light pass, then camera pass. With the transport's effort
-// control on, the renderer learns the price of variance from each pass it renders and the
-// next pass's gathers use it: a pass then depends on the passes this renderer rendered
-// before it, each a function of (seed, pass), so a render still is of its seed alone (the
-// price reads counted work, never a clock: work.hpp). With VrlMarginal as step one the same
-// holds of which gathers it fits (TransportSettings::marginal_fraction), learned from the
-// scores of the earlier passes.
+// control on, or `auto` (whose image model the price chooses), the renderer learns the price
+// of variance from each pass it renders and the next pass's gathers use it: a pass then
+// depends on the passes this renderer rendered before it, each a function of (seed, pass),
+// so a render still is of its seed alone (the price reads counted work, never a clock:
+// work.hpp). With VrlMarginal as step one the same holds of which gathers it fits
+// (TransportSettings::marginal_fraction), learned from the scores of the earlier passes.
 class VrlRenderer : public Renderer {
  public:
   VrlRenderer(const Scene& scene, const RenderSettings& settings)
@@ -84,6 +84,9 @@ class VrlRenderer : public Renderer {
   // The scores VrlMarginal's fits are given by, learned like the price.
   const vrlis::ScoreOctaves& marginal_scores() const { return marginal_scores_; }
   void set_marginal_scores(const vrlis::ScoreOctaves& scores) { marginal_scores_ = scores; }
+  // `auto` in both gathers: the image's model is the price's (EffortPrice::model), the
+  // control on or off.
+  bool ModelsPriced() const;
   // The choice of the VRL bound (RenderSettings::vrl_bounds), learned from the pilot passes.
   const BoundChoice& bound_choice() const { return bounds_; }
 
@@ -91,6 +94,8 @@ class VrlRenderer : public Renderer {
   // A pass, or the effort control's pilot (EffortPrice::InPilot's pixels, with `auto` its probe
   // first; its film not kept).
   Film RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilot, PassStats* stats);
+  // Whether the price learns from the passes: the control on, or the image's model priced.
+  bool Priced() const;
 
   vrlis::EffortPrice price_;
   BoundChoice bounds_;
