@@ -116,7 +116,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
     price_.BeginPass(models);
   }
   tbb::enumerable_thread_specific<vrlis::ScoreOctaves> pass_scores;
-  const bool pairs_models = ModelsPriced();
+  const bool models_priced = ModelsPriced();
   // The pilot's pixel points are independent of every pass's (stratified points are a sequence over the passes).
   RenderSettings pixel_settings = settings_;
   if (pilot) pixel_settings.pixel_samples = PixelSamples::Independent;
@@ -142,7 +142,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
         // gather their VRLs under the accurate model, for the statistics alone
         // (docs/maths.md#effort-accurate).
         const std::uint64_t left = static_cast<std::uint64_t>(y) * settings_.width + static_cast<std::uint64_t>(x - x % 2);
-        options.pair = pairs_models && price_.Pairs(x, y, Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
+        options.pair = models_priced && price_.Pairs(x, y, Rng(seed, pass, left, StreamPurpose::EffortPair).Uniform());
       } else {
         options.effort.medium = options.effort.surface = base;
         options.effort.visit_work = kVisitWork;
@@ -172,7 +172,7 @@ Film VrlRenderer::RenderPixels(std::uint64_t seed, std::uint64_t pass, bool pilo
     return v;
   };
   Film film;
-  if (pilot && pairs_models) {  // the probe first: whether the rest of the pilot pairs
+  if (pilot && models_priced) {  // the probe first: whether the rest of the pilot pairs
     auto probe = [](int x, int y) { return vrlis::EffortPrice::InProbe(x, y); };
     RenderSettings probe_settings = pixel_settings;
     probe_settings.rows_done = nullptr;  // (the progress counts the pilot's rows once)

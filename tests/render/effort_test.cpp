@@ -111,6 +111,19 @@ bool Same(const vrlis::integration::Film& a, const vrlis::integration::Film& b) 
          std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(vrlis::integration::Spectrum)) == 0;
 }
 
+// Pass 3 of a fresh renderer given `learned` (the price after passes 0-2) is `original` bit for
+// bit, at one thread and at four: a pass's decisions are the price's, not its pixels' order.
+void CheckPassFromPrice(const vrlis::scenes::BuiltScene& built, const vrlis::integration::RenderSettings& s,
+                        const vrlis::EffortPrice& learned, const vrlis::integration::Film& original) {
+  for (int threads : {1, 4}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    vrlis::integration::VrlRenderer b(built.scene, s);
+    b.set_effort_price(learned);
+    INFO(threads << " threads");
+    CHECK(Same(b.RenderPass(1, 3, nullptr), original));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("a pass's effort decisions come from the passes before it", "[render][effort]") {
@@ -128,12 +141,7 @@ TEST_CASE("a pass's effort decisions come from the passes before it", "[render][
   REQUIRE(learned.price(vrlis::GatherKind::Medium) > 0);
   REQUIRE(learned.price(vrlis::GatherKind::Surface) > 0);
   const vrlis::integration::Film original = a.RenderPass(1, 3, nullptr);
-  for (int threads : {1, 4}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-    vrlis::integration::VrlRenderer b(built->scene, s);
-    b.set_effort_price(learned);
-    CHECK(Same(b.RenderPass(1, 3, nullptr), original));
-  }
+  CheckPassFromPrice(*built, s, learned, original);
   vrlis::integration::VrlRenderer fresh(built->scene, s);
   CHECK_FALSE(Same(fresh.RenderPass(1, 3, nullptr), original));
 }
@@ -384,23 +392,16 @@ TEST_CASE("effort off: auto still takes the image's model by the price, and ever
   vrlis::integration::VrlRenderer a(built->scene, s);
   a.set_effort_price(learned);
   const vrlis::integration::Film original = a.RenderPass(1, 3, nullptr);
-  for (int threads : {1, 4}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-    vrlis::integration::VrlRenderer b(built->scene, s);
-    b.set_effort_price(learned);
-    CHECK(Same(b.RenderPass(1, 3, nullptr), original));
-  }
+  CheckPassFromPrice(*built, s, learned, original);
   // The model acts: the cheapest model in both gathers, the pass is equiangular sampling's
   // but in the few pixels that explore the rule (EffortPrice::kExplore, 1 in 512 per gather kind).
-  {
-    s.transport.sampling = *vrlis::ParseGatherSamplers("equiangular");
-    const vrlis::integration::Film fixed = vrlis::integration::VrlRenderer(built->scene, s).RenderPass(1, 3, nullptr);
-    int differ = 0;
-    for (std::size_t i = 0; i < fixed.pixels.size(); ++i)
-      differ += std::memcmp(&fixed.pixels[i], &original.pixels[i], sizeof fixed.pixels[i]) != 0;
-    INFO(differ << " pixels differ from equiangular sampling's");
-    CHECK(differ <= 4);
-  }
+  s.transport.sampling = *vrlis::ParseGatherSamplers("equiangular");
+  const vrlis::integration::Film fixed = vrlis::integration::VrlRenderer(built->scene, s).RenderPass(1, 3, nullptr);
+  int differ = 0;
+  for (std::size_t i = 0; i < fixed.pixels.size(); ++i)
+    differ += std::memcmp(&fixed.pixels[i], &original.pixels[i], sizeof fixed.pixels[i]) != 0;
+  INFO(differ << " pixels differ from equiangular sampling's");
+  CHECK(differ <= 4);
 }
 
 // A pair (GatherOptions::pair) is for the statistics alone: the call returns what it returns
